@@ -1,0 +1,39 @@
+# Included by Draco's own CMakeLists.txt through the build hook of
+# patches/0004, before Draco defines any source list or target: puts the
+# draco-uv tree on Draco's include path and adds our sources to Draco's
+# encoder and decoder source lists, so that libdraco, the tools and Draco's
+# unit tests all build with the extension.
+
+get_filename_component(draco_uv_root "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
+set(draco_uv_schemes "${draco_uv_root}/prediction_schemes")
+set(draco_uv_ext "${draco_uv_root}/draco_ext")
+
+list(APPEND draco_include_paths "${draco_uv_root}")
+
+list(
+  APPEND draco_compression_attributes_pred_schemes_dec_sources
+         "${draco_uv_ext}/uv_bitstream_guard.h"
+         "${draco_uv_ext}/uv_fixed_point.h"
+         "${draco_uv_ext}/uv_processing_order.h"
+         "${draco_uv_schemes}/mesh_prediction_scheme_tex_coords_weighted_decoder.h"
+         "${draco_uv_schemes}/mesh_prediction_scheme_tex_coords_weighted_predictor.h"
+         "${draco_uv_schemes}/mesh_prediction_scheme_tex_coords_weighted_shared.h"
+         "${draco_uv_schemes}/uv_stencil_geometry.h")
+
+list(
+  APPEND draco_compression_attributes_pred_schemes_enc_sources
+         "${draco_uv_schemes}/mesh_prediction_scheme_tex_coords_weighted_encoder.h")
+
+# Object libraries with Draco's include paths (the prediction scheme lists
+# above are header-only and compiled without them).
+list(
+  APPEND draco_compression_decode_sources
+         "${draco_uv_ext}/uv_residual_coder.cc"
+         "${draco_uv_ext}/uv_residual_coder.h")
+
+list(
+  APPEND draco_compression_encode_sources
+         "${draco_uv_ext}/uv_encode_settings.cc"
+         "${draco_uv_ext}/uv_encode_settings.h"
+         "${draco_uv_ext}/uv_prediction_options.cc"
+         "${draco_uv_ext}/uv_prediction_options.h")
