@@ -1,0 +1,529 @@
+// Copyright 2026 The draco-uv Authors.
+//
+// Licensed under the Apache License, Version 2.0 (the "License");
+// you may not use this file except in compliance with the License.
+// You may obtain a copy of the License at
+//
+//      http://www.apache.org/licenses/LICENSE-2.0
+//
+// Unless required by applicable law or agreed to in writing, software
+// distributed under the License is distributed on an "AS IS" BASIS,
+// WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+// See the License for the specific language governing permissions and
+// limitations under the License.
+//
+// Mesh-guided texture coordinate predictor shared by the encoder and the
+// decoder of MESH_PREDICTION_TEX_COORDS_WEIGHTED.
+//
+// Based on:
+//   [Váša & Brunnett 2014] L. Váša, G. Brunnett: Efficient encoding of
+//     texture coordinates guided by mesh geometry. CGF 33(5), section 4.
+//   [Touma & Gotsman 1998] C. Touma, C. Gotsman: Triangle mesh compression.
+//     Graphics Interface 1998 (the parallelogram rule).
+// The stencil arithmetic is in uv_stencil_geometry.h; the variants beyond
+// the paper (stencil averaging, agreement weighting, the per-vertex adaptive
+// choice, inferred orientation) were selected by measuring residual entropy
+// on real meshes (BENCHMARKS.md).
+#ifndef DRACO_UV_PREDICTION_SCHEMES_MESH_PREDICTION_SCHEME_TEX_COORDS_WEIGHTED_PREDICTOR_H_
+#define DRACO_UV_PREDICTION_SCHEMES_MESH_PREDICTION_SCHEME_TEX_COORDS_WEIGHTED_PREDICTOR_H_
+
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <tuple>
+#include <vector>
+
+#include "draco/attributes/point_attribute.h"
+#include "draco/attributes/geometry_indices.h"
+#include "draco_ext/uv_corner_graph.h"
+#include "draco_ext/uv_processing_order.h"
+#include "draco_ext/uv_residual_coder.h"
+#include "draco_ext/uv_stencil_plan.h"
+#include "prediction_schemes/mesh_prediction_scheme_tex_coords_weighted_shared.h"
+#include "prediction_schemes/uv_stencil_geometry.h"
+
+namespace draco {
+
+// Predicts the texture coordinates of the entries (UV vertices) of one
+// attribute, in a UvProcessingOrder, from the entries processed before and
+// from the quantised 3D positions of all vertices.
+//
+// Stencils: the faces whose tip (last processed vertex) is O, all of them or
+// (kReachStencil) the one through which Draco's traversal reaches O; the
+// other two UV vertices L and R are known. Each stencil gives
+//   c  the weighted parallelogram of eq. (3)-(4) when B, the vertex across
+//      LR, is known (exact for locally affine parameterisations), else s;
+//   s  the similarity (conformal) rule; its side of LR comes from B, else
+//      from the majority orientation of the faces known so far, so no
+//      orientation bit is sent;
+//   a  the parallelogram vL + vR - vB when B is known.
+// Candidates combine all stencils: mean of c and s, mean of c, mean of s,
+// mean of a, and the agreement-weighted mean of (c + s) / 2
+// (UvAgreementWeight()). kAdaptive picks, per vertex, the candidate with the
+// smallest summed errors at the known neighbours; kAgreementWeighted always
+// takes the last one; kReachStencil the mean of c and s.
+//
+// Also provides the residual context: the bit length (capped at 7) of the
+// neighbours' mean residual magnitude, 8 without known neighbours.
+//
+// Fallbacks: no stencil (the first two vertices of a chart, degenerate
+// fans): the latest known neighbour, else the previously processed entry,
+// else zero. Stencils with a degenerate 3D edge or extreme coefficients
+// predict the midpoint of LR. A vertex with more than kMaxStencils stencils
+// uses those with the earliest L and R.
+//
+// Weak on layouts unrelated to the geometry (hand-made, mirrored or packed
+// islands) and on chart starts, which are pure deltas; many-chart atlases
+// spend a large share of their bits there.
+template <typename DataTypeT>
+class MeshPredictionSchemeTexCoordsWeightedPredictor {
+ public:
+  // Bounds the weighted sums of Q16 predictions (< 2^52 each) below 2^63.
+  static constexpr int kMaxStencils = 1024;
+  static constexpr int kNumCandidates = 5;
+
+  void SetPositionAttribute(const PointAttribute &position_attribute) {
+    pos_attribute_ = &position_attribute;
+  }
+  void SetEntryToPointIdMap(const PointIndex *map) {
+    entry_to_point_id_map_ = map;
+  }
+  bool IsInitialized() const { return pos_attribute_ != nullptr; }
+
+  typedef UvStencilPlan::Stencil Stencil;
+
+  // Prepares one pass over the entries of |order|, which must outlive it.
+  void Start(UvPredictorKind kind, const UvProcessingOrder &order);
+
+  // Computes predicted_value() and context() for the entry at |step| of the
+  // order from its stencils and known neighbours (both lists must stay valid
+  // until Update()); |data| holds the values of all earlier steps' entries.
+  void Predict(int step, const Stencil *stencils, int num_stencils,
+               const int32_t *neighbours, int num_neighbours,
+               const DataTypeT *data);
+
+  // Records the value (now in |data|) and the correction of the entry just
+  // predicted at |step|.
+  void Update(int step, const DataTypeT *data, const DataTypeT *correction);
+
+  const DataTypeT *predicted_value() const { return predicted_value_; }
+  int context() const { return context_; }
+
+ private:
+  typedef UvStencilPos Pos;
+  typedef UvStencilUv Uv;
+
+  // Indices of the candidates.
+  enum {
+    kMeanOfBoth = 0,
+    kAffineMean = 1,
+    kSimilarityMean = 2,
+    kParallelogramMean = 3,
+    kAgreement = 4
+  };
+
+  Uv UvOf(const DataTypeT *data, int32_t entry) const {
+    return Uv(data[entry * kUvNumComponents],
+              data[entry * kUvNumComponents + 1]);
+  }
+  const Pos &PositionOf(int32_t entry) const { return positions_[entry]; }
+  // Sign of the 2D cross product; 0 also for differences out of the
+  // supported range (only in hostile data), which keeps products < 2^41.
+  static int SignOfCross(const Uv &a, const Uv &b) {
+    if (!IsSupportedUvDifference(a) || !IsSupportedUvDifference(b)) {
+      return 0;
+    }
+    const int64_t cross = a[0] * b[1] - a[1] * b[0];
+    return cross > 0 ? 1 : (cross < 0 ? -1 : 0);
+  }
+
+  void CachePositions();
+  void SelectStencils(const Stencil *stencils, int num_stencils);
+  int OrientationFor(const Stencil &stencil, const DataTypeT *data) const;
+  void PredictStencil(const Stencil &stencil, int32_t tip,
+                      const DataTypeT *data, Uv *affine, Uv *similarity) const;
+  void ComputeCandidates(int32_t tip, const DataTypeT *data);
+  void ComputeFallback(int step, const DataTypeT *data);
+  int ChooseCandidate() const;
+  void ComputeContext();
+
+  const PointAttribute *pos_attribute_ = nullptr;
+  const PointIndex *entry_to_point_id_map_ = nullptr;
+  UvPredictorKind kind_ = UvPredictorKind::kAdaptive;
+  const UvProcessingOrder *order_ = nullptr;
+  int num_entries_ = 0;
+
+  // Positions by entry, minus each component's minimum, below 2^30.
+  std::vector<Pos> positions_;
+  // Per entry: |correction| summed over both components (saturated), and
+  // per candidate the summed |prediction error| (kAdaptive only).
+  std::vector<uint32_t> magnitude_;
+  std::vector<std::array<uint32_t, kNumCandidates>> candidate_error_;
+  int64_t positive_faces_ = 0;
+  int64_t negative_faces_ = 0;
+
+  // State of the current step.
+  const Stencil *stencils_ = nullptr;
+  int num_stencils_ = 0;
+  const int32_t *neighbours_ = nullptr;
+  int num_neighbours_ = 0;
+  std::vector<Stencil> selected_stencils_;  // Only for very long rows.
+  std::array<Uv, kNumCandidates> candidates_;  // Rounded to texture units.
+  DataTypeT predicted_value_[kUvNumComponents] = {};
+  int context_ = 0;
+};
+
+template <typename DataTypeT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::
+    CachePositions() {
+  std::vector<std::array<int64_t, 3>> values(num_entries_);
+  std::array<int64_t, 3> min_value;
+  min_value.fill(std::numeric_limits<int64_t>::max());
+  int64_t max_value = std::numeric_limits<int64_t>::lowest();
+  for (int entry = 0; entry < num_entries_; ++entry) {
+    const PointIndex point = entry_to_point_id_map_[entry];
+    pos_attribute_->ConvertValue(pos_attribute_->mapped_index(point), 3,
+                                 values[entry].data());
+    for (int i = 0; i < 3; ++i) {
+      min_value[i] = std::min(min_value[i], values[entry][i]);
+      max_value = std::max(max_value, values[entry][i]);
+    }
+  }
+  // Integer attributes of any width fit once shifted below 2^30.
+  int64_t range = 0;
+  for (int i = 0; i < 3 && num_entries_ > 0; ++i) {
+    range = std::max(range, max_value - min_value[i]);
+  }
+  const int shift = std::max(0, BitLength(static_cast<uint64_t>(range)) - 30);
+  positions_.resize(num_entries_);
+  for (int entry = 0; entry < num_entries_; ++entry) {
+    for (int i = 0; i < 3; ++i) {
+      positions_[entry][i] =
+          static_cast<int32_t>((values[entry][i] - min_value[i]) >> shift);
+    }
+  }
+}
+
+template <typename DataTypeT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::Start(
+    UvPredictorKind kind, const UvProcessingOrder &order) {
+  kind_ = kind;
+  order_ = &order;
+  num_entries_ = static_cast<int>(order.rank.size());
+  CachePositions();
+  magnitude_.assign(num_entries_, 0);
+  if (kind_ == UvPredictorKind::kAdaptive) {
+    candidate_error_.assign(num_entries_, {});
+  }
+  positive_faces_ = 0;
+  negative_faces_ = 0;
+}
+
+template <typename DataTypeT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::SelectStencils(
+    const Stencil *stencils, int num_stencils) {
+  stencils_ = stencils;
+  num_stencils_ = num_stencils;
+  if (num_stencils_ <= kMaxStencils) {
+    return;
+  }
+  // Row order differs between encoder and decoder: select by ranks.
+  const auto &rank = order_->rank;
+  selected_stencils_.assign(stencils_, stencils_ + num_stencils_);
+  std::nth_element(selected_stencils_.begin(),
+                   selected_stencils_.begin() + kMaxStencils,
+                   selected_stencils_.end(),
+                   [&](const Stencil &a, const Stencil &b) {
+                     const auto key = [&](const Stencil &s) {
+                       return std::make_tuple(
+                           rank[s.l], rank[s.r],
+                           s.b == UvCornerGraph::kNone ? -1 : rank[s.b]);
+                     };
+                     return key(a) < key(b);
+                   });
+  stencils_ = selected_stencils_.data();
+  num_stencils_ = kMaxStencils;
+}
+
+template <typename DataTypeT>
+int MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::OrientationFor(
+    const Stencil &stencil, const DataTypeT *data) const {
+  // Face (O, L, R) has the orientation of face (B, R, L) across LR, whose
+  // UV area has the sign of -cross(vR - vL, vB - vL).
+  if (stencil.b != UvCornerGraph::kNone) {
+    const Uv uv_l = UvOf(data, stencil.l);
+    const int sign = SignOfCross(UvOf(data, stencil.r) - uv_l,
+                                 UvOf(data, stencil.b) - uv_l);
+    if (sign != 0) {
+      return -sign;
+    }
+  }
+  return negative_faces_ > positive_faces_ ? -1 : 1;
+}
+
+template <typename DataTypeT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::PredictStencil(
+    const Stencil &stencil, int32_t tip, const DataTypeT *data, Uv *affine,
+    Uv *similarity) const {
+  const Uv uv_l = UvOf(data, stencil.l);
+  const Uv uv_r = UvOf(data, stencil.r);
+  const bool has_b = stencil.b != UvCornerGraph::kNone;
+  const Uv uv_b = has_b ? UvOf(data, stencil.b) : uv_l;
+  UvStencilFrame frame;
+  if (!IsSupportedUvDifference(uv_r - uv_l) ||
+      !IsSupportedUvDifference(uv_b - uv_l) ||
+      !ComputeUvStencilFrame(PositionOf(stencil.l), PositionOf(stencil.r),
+                             PositionOf(tip),
+                             PositionOf(has_b ? stencil.b : stencil.l), has_b,
+                             &frame)) {
+    *similarity = *affine = PredictMidpointQ16(uv_l, uv_r);
+    return;
+  }
+  *similarity = ClampPredictionQ16(PredictSimilarityQ16(
+      frame, uv_l, uv_r, OrientationFor(stencil, data)));
+  *affine = frame.has_opposite
+                ? ClampPredictionQ16(PredictAffineQ16(frame, uv_l, uv_r, uv_b))
+                : *similarity;
+}
+
+template <typename DataTypeT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::
+    ComputeCandidates(int32_t tip, const DataTypeT *data) {
+  Uv affine_sum(0, 0), similarity_sum(0, 0), parallelogram_sum(0, 0);
+  Uv agreement_sum(0, 0);
+  int64_t weight_sum = 0;
+  int num_parallelograms = 0;
+  for (int i = 0; i < num_stencils_; ++i) {
+    const Stencil &stencil = stencils_[i];
+    Uv affine, similarity;
+    PredictStencil(stencil, tip, data, &affine, &similarity);
+    affine_sum = affine_sum + affine;
+    similarity_sum = similarity_sum + similarity;
+    if (stencil.b != UvCornerGraph::kNone) {
+      parallelogram_sum =
+          parallelogram_sum +
+          PredictParallelogramQ16(UvOf(data, stencil.l), UvOf(data, stencil.r),
+                                  UvOf(data, stencil.b));
+      ++num_parallelograms;
+    }
+    const int64_t weight = UvAgreementWeight(affine, similarity);
+    weight_sum += weight;
+    agreement_sum = agreement_sum + (affine + similarity) / 2 * weight;
+  }
+  candidates_[kAffineMean] = UvMeanOfQ16(affine_sum, num_stencils_);
+  candidates_[kSimilarityMean] = UvMeanOfQ16(similarity_sum, num_stencils_);
+  candidates_[kMeanOfBoth] =
+      UvMeanOfQ16(affine_sum + similarity_sum, 2 * num_stencils_);
+  candidates_[kAgreement] =
+      weight_sum > 0
+          ? Uv(RoundedDivide(agreement_sum[0], weight_sum * kUvStencilOne),
+               RoundedDivide(agreement_sum[1], weight_sum * kUvStencilOne))
+          : candidates_[kMeanOfBoth];
+  candidates_[kParallelogramMean] =
+      num_parallelograms > 0 ? UvMeanOfQ16(parallelogram_sum, num_parallelograms)
+                             : candidates_[kMeanOfBoth];
+}
+
+template <typename DataTypeT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::ComputeFallback(
+    int step, const DataTypeT *data) {
+  // The latest known neighbour, else the previous entry, else zero.
+  int32_t source = step > 0 ? order_->entries[step - 1] : UvCornerGraph::kNone;
+  int32_t latest = -1;
+  for (int i = 0; i < num_neighbours_; ++i) {
+    const int32_t neighbour = neighbours_[i];
+    if (order_->rank[neighbour] > latest) {
+      latest = order_->rank[neighbour];
+      source = neighbour;
+    }
+  }
+  candidates_.fill(source == UvCornerGraph::kNone ? Uv(0, 0)
+                                                  : UvOf(data, source));
+}
+
+template <typename DataTypeT>
+int MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::ChooseCandidate()
+    const {
+  if (kind_ == UvPredictorKind::kAgreementWeighted) {
+    return kAgreement;
+  }
+  if (kind_ == UvPredictorKind::kReachStencil) {
+    return kMeanOfBoth;
+  }
+  // Errors are capped at 2^21 per entry: sums cannot overflow int64.
+  std::array<int64_t, kNumCandidates> errors = {};
+  for (int i = 0; i < num_neighbours_; ++i) {
+    const auto &error = candidate_error_[neighbours_[i]];
+    for (int k = 0; k < kNumCandidates; ++k) {
+      errors[k] += error[k];
+    }
+  }
+  int best = kMeanOfBoth;
+  for (int k = 1; k < kNumCandidates; ++k) {
+    if (errors[k] < errors[best]) {
+      best = k;
+    }
+  }
+  return best;
+}
+
+template <typename DataTypeT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::ComputeContext() {
+  const int count = num_neighbours_;
+  if (count == 0) {
+    context_ = kUvResidualNumContexts - 1;
+    return;
+  }
+  int64_t sum = 0;
+  for (int i = 0; i < count; ++i) {
+    sum += magnitude_[neighbours_[i]];
+  }
+  const uint64_t mean =
+      static_cast<uint64_t>(DivideBySmallCount(sum + count / 2, count));
+  context_ = std::min(kUvResidualNumContexts - 2, BitLength(mean));
+}
+
+template <typename DataTypeT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::Predict(
+    int step, const Stencil *stencils, int num_stencils,
+    const int32_t *neighbours, int num_neighbours, const DataTypeT *data) {
+  SelectStencils(stencils, num_stencils);
+  neighbours_ = neighbours;
+  num_neighbours_ = num_neighbours;
+  if (num_stencils_ == 0) {
+    ComputeFallback(step, data);
+  } else {
+    ComputeCandidates(order_->entries[step], data);
+  }
+  const Uv &chosen = candidates_[ChooseCandidate()];
+  for (int i = 0; i < kUvNumComponents; ++i) {
+    // The wrap transform clamps to the attribute's range afterwards.
+    predicted_value_[i] = static_cast<DataTypeT>(std::max<int64_t>(
+        std::numeric_limits<DataTypeT>::lowest(),
+        std::min<int64_t>(std::numeric_limits<DataTypeT>::max(), chosen[i])));
+  }
+  ComputeContext();
+}
+
+template <typename DataTypeT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::Update(
+    int step, const DataTypeT *data, const DataTypeT *correction) {
+  constexpr uint64_t kMaxError = uint64_t{1} << 20;
+  const int32_t tip = order_->entries[step];
+  const Uv value = UvOf(data, tip);
+  magnitude_[tip] = static_cast<uint32_t>(
+      std::min<uint64_t>(std::numeric_limits<uint32_t>::max(),
+                         AbsAsUnsigned(correction[0]) +
+                             AbsAsUnsigned(correction[1])));
+  if (kind_ == UvPredictorKind::kAdaptive) {
+    for (int k = 0; k < kNumCandidates; ++k) {
+      const Uv error = value - candidates_[k];
+      candidate_error_[tip][k] =
+          static_cast<uint32_t>(std::min(AbsAsUnsigned(error[0]), kMaxError) +
+                                std::min(AbsAsUnsigned(error[1]), kMaxError));
+    }
+  }
+  // The stencil faces are the faces this entry completes.
+  for (int i = 0; i < num_stencils_; ++i) {
+    const int sign = SignOfCross(UvOf(data, stencils_[i].l) - value,
+                                 UvOf(data, stencils_[i].r) - value);
+    positive_faces_ += sign > 0;
+    negative_faces_ += sign < 0;
+  }
+}
+
+namespace uv_prediction_internal {
+
+// The stencil of the face through which Draco's traversal reached entry
+// |p| (Draco's order: the known entries are those below |p|) and the known
+// vertices of that face and of B as neighbours. Returns the number of
+// stencils, 0 or 1.
+template <class MeshDataT>
+int ReachStencil(const MeshDataT &mesh_data, int p,
+                 UvStencilPlan::Stencil *stencil, int32_t *neighbours,
+                 int *num_neighbours) {
+  const auto &table = *mesh_data.corner_table();
+  const auto &vertex_to_entry = *mesh_data.vertex_to_data_map();
+  const auto known_entry = [&](CornerIndex corner) -> int32_t {
+    if (corner == kInvalidCornerIndex) {
+      return UvCornerGraph::kNone;
+    }
+    const VertexIndex v = table.Vertex(corner);
+    if (v == kInvalidVertexIndex || v.value() >= vertex_to_entry.size()) {
+      return UvCornerGraph::kNone;
+    }
+    const int32_t entry = vertex_to_entry[v.value()];
+    return entry >= 0 && entry < p ? entry : UvCornerGraph::kNone;
+  };
+  const CornerIndex corner = (*mesh_data.data_to_corner_map())[p];
+  const int32_t l = known_entry(table.Next(corner));
+  const int32_t r = known_entry(table.Previous(corner));
+  const int32_t b = known_entry(table.Opposite(corner));
+  *num_neighbours = 0;
+  for (const int32_t entry : {l, r, b}) {
+    if (entry != UvCornerGraph::kNone) {
+      neighbours[(*num_neighbours)++] = entry;
+    }
+  }
+  *stencil = {l, r, b};
+  return l != UvCornerGraph::kNone && r != UvCornerGraph::kNone && l != r;
+}
+
+}  // namespace uv_prediction_internal
+
+// Runs |predictor| over all entries of |mesh_data| as |config| says: builds
+// the processing order and the stencils, and for every step calls
+// Predict() and then |process|(step, entry), which must make the entry's
+// value available in |data| and call Update(), and may return false to
+// stop; RunUvPrediction() then returns false.
+template <typename DataTypeT, class MeshDataT, class ProcessT>
+bool RunUvPrediction(
+    const MeshDataT &mesh_data, const UvPredictionConfig &config,
+    const DataTypeT *data,
+    MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT> *predictor,
+    ProcessT process) {
+  const auto &data_to_corner = *mesh_data.data_to_corner_map();
+  UvProcessingOrder order;
+  if (config.kind == UvPredictorKind::kReachStencil) {
+    BuildDataOrder(data_to_corner, &order);
+    predictor->Start(config.kind, order);
+    UvStencilPlan::Stencil stencil;
+    int32_t neighbours[3];
+    int num_neighbours;
+    for (int p = 0; p < static_cast<int>(data_to_corner.size()); ++p) {
+      const int num_stencils = uv_prediction_internal::ReachStencil(
+          mesh_data, p, &stencil, neighbours, &num_neighbours);
+      predictor->Predict(p, &stencil, num_stencils, neighbours, num_neighbours,
+                         data);
+      if (!process(p, p)) {
+        return false;
+      }
+    }
+    return true;
+  }
+  UvCornerGraph graph;
+  BuildUvCornerGraph(mesh_data, &graph);
+  if (config.max_degree_order) {
+    BuildMaxDegreeOrder(graph, data_to_corner, &order);
+  } else {
+    BuildDataOrder(data_to_corner, &order);
+  }
+  UvStencilPlan plan;
+  BuildUvStencilPlan(graph, order, &plan);
+  predictor->Start(config.kind, order);
+  for (int step = 0; step < static_cast<int>(order.entries.size()); ++step) {
+    const int s0 = plan.stencil_begin[step], n0 = plan.neighbour_begin[step];
+    predictor->Predict(step, plan.stencils.data() + s0,
+                       plan.stencil_begin[step + 1] - s0,
+                       plan.neighbours.data() + n0,
+                       plan.neighbour_begin[step + 1] - n0, data);
+    if (!process(step, order.entries[step])) {
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace draco
+
+#endif  // DRACO_UV_PREDICTION_SCHEMES_MESH_PREDICTION_SCHEME_TEX_COORDS_WEIGHTED_PREDICTOR_H_
