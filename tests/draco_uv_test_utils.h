@@ -1,0 +1,57 @@
+// Copyright 2026 The draco-uv Authors.
+//
+// Licensed under the Apache License, Version 2.0 (the "License");
+// you may not use this file except in compliance with the License.
+// You may obtain a copy of the License at
+//
+//      http://www.apache.org/licenses/LICENSE-2.0
+//
+// Unless required by applicable law or agreed to in writing, software
+// distributed under the License is distributed on an "AS IS" BASIS,
+// WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+// See the License for the specific language governing permissions and
+// limitations under the License.
+//
+// Shared helpers of the draco-uv tests: test data locations, encoding with
+// the tools' settings, decoding, and per-corner attribute comparison.
+#ifndef DRACO_UV_TESTS_DRACO_UV_TEST_UTILS_H_
+#define DRACO_UV_TESTS_DRACO_UV_TEST_UTILS_H_
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "draco/core/status_or.h"
+#include "draco/mesh/mesh.h"
+#include "draco_ext/uv_encode_settings.h"
+
+namespace draco {
+
+// Paths of draco-uv's testdata/, Draco's testdata/ and the real-mesh corpus
+// (the DRACO_UV_CORPUS environment variable overrides the configured one).
+std::string UvTestdataPath(const std::string &name);
+std::string DracoTestdataPath(const std::string &name);
+std::string UvTempPath(const std::string &name);
+std::string CorpusDir();
+
+// Meshes of Draco's testdata (OBJ, PLY, glTF, GLB) that load and have
+// texture coordinates on faces, as paths relative to its testdata/.
+std::vector<std::string> DracoTestdataTexturedMeshes();
+// The corpus's meshes/*.obj; empty when the corpus is absent.
+std::vector<std::string> CorpusMeshPaths();
+
+StatusOr<std::unique_ptr<Mesh>> ReadTestMesh(const std::string &path);
+
+// EncodeMeshWithSettings() into a byte vector.
+StatusOr<std::vector<char>> EncodeMeshToBytes(
+    const Mesh &mesh, const UvEncodeSettings &settings);
+StatusOr<std::unique_ptr<Mesh>> DecodeDracoMesh(const std::vector<char> &data);
+
+// Values of the |index|-th attribute of |type| at every face corner, in face
+// order, as float32; identical meshes give identical vectors.
+std::vector<float> CornerValues(const Mesh &mesh, GeometryAttribute::Type type,
+                                int index = 0);
+
+}  // namespace draco
+
+#endif  // DRACO_UV_TESTS_DRACO_UV_TEST_UTILS_H_
