@@ -1,0 +1,212 @@
+// Copyright 2026 The draco-uv Authors.
+//
+// Licensed under the Apache License, Version 2.0 (the "License");
+// you may not use this file except in compliance with the License.
+// You may obtain a copy of the License at
+//
+//      http://www.apache.org/licenses/LICENSE-2.0
+//
+// Unless required by applicable law or agreed to in writing, software
+// distributed under the License is distributed on an "AS IS" BASIS,
+// WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+// See the License for the specific language governing permissions and
+// limitations under the License.
+//
+// draco_uv_eval: how much each UV coder saves on a mesh or a folder of
+// meshes, in the terms of [Váša & Brunnett 2014] section 6.
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "draco/io/mesh_io.h"
+#include "draco_ext/uv_eval.h"
+#include "draco_ext/uv_eval_report.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Args {
+  std::string input;
+  draco::UvEvalOptions options;
+  std::string csv;
+  std::string plot;
+  bool progress = true;
+};
+
+void Usage() {
+  printf(
+      "Usage: draco_uv_eval <mesh or folder> [options]\n"
+      "\n"
+      "Encodes and decodes every mesh (OBJ, PLY, glTF, GLB) with each UV\n"
+      "coder and reports UV bytes, bits per UV vertex, RMSE (eq. 9 of Vasa &\n"
+      "Brunnett 2014), times and the ratio to stock Draco's best of -cl 7/10.\n"
+      "\n"
+      "  --qt LIST        texture coordinate quantization bits, default 10,12\n"
+      "  --qp N           position quantization bits, default 14\n"
+      "  --cl N           compression level, default 10\n"
+      "  --schemes LIST   -uv_pred names, default "
+      "draco,parallelogram,portable,multi_parallelogram,weighted,auto\n"
+      "  --repeat N       timing runs (minimum reported), default 3\n"
+      "  --csv FILE       one row per (mesh, scheme, qt)\n"
+      "  --plot FILE      rate-distortion chart (PNG or SVG, needs python3 "
+      "with matplotlib)\n"
+      "  --quiet          no progress on stderr\n");
+}
+
+std::vector<std::string> SplitList(const std::string &list) {
+  std::vector<std::string> items;
+  std::stringstream stream(list);
+  std::string item;
+  while (std::getline(stream, item, ',')) {
+    if (!item.empty()) {
+      items.push_back(item);
+    }
+  }
+  return items;
+}
+
+bool ParseInt(const std::string &text, int *value) {
+  char *end = nullptr;
+  const long parsed = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || parsed < 0 || parsed > 30) {
+    return false;
+  }
+  *value = static_cast<int>(parsed);
+  return true;
+}
+
+bool ParseArgs(int argc, char **argv, Args *args) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string flag = argv[i];
+    const bool has_value = i + 1 < argc;
+    if (flag == "-h" || flag == "--help") {
+      return false;
+    } else if (flag == "--quiet") {
+      args->progress = false;
+    } else if (!has_value && flag.rfind("--", 0) == 0) {
+      fprintf(stderr, "Error: %s needs a value.\n", flag.c_str());
+      return false;
+    } else if (flag == "--qt") {
+      args->options.qt.clear();
+      for (const std::string &item : SplitList(argv[++i])) {
+        int qt;
+        if (!ParseInt(item, &qt) || qt == 0) {
+          fprintf(stderr, "Error: bad --qt value '%s'.\n", item.c_str());
+          return false;
+        }
+        args->options.qt.push_back(qt);
+      }
+    } else if (flag == "--qp" || flag == "--cl" || flag == "--repeat") {
+      int *target = flag == "--qp"   ? &args->options.qp
+                    : flag == "--cl" ? &args->options.cl
+                                     : &args->options.repeat;
+      if (!ParseInt(argv[++i], target)) {
+        fprintf(stderr, "Error: bad %s value '%s'.\n", flag.c_str(), argv[i]);
+        return false;
+      }
+    } else if (flag == "--schemes") {
+      args->options.schemes = SplitList(argv[++i]);
+    } else if (flag == "--csv") {
+      args->csv = argv[++i];
+    } else if (flag == "--plot") {
+      args->plot = argv[++i];
+    } else if (args->input.empty() && flag.rfind("-", 0) != 0) {
+      args->input = flag;
+    } else {
+      fprintf(stderr, "Error: unknown argument '%s'.\n", flag.c_str());
+      return false;
+    }
+  }
+  return !args->input.empty() && !args->options.qt.empty() &&
+         !args->options.schemes.empty();
+}
+
+bool IsMeshFile(const fs::path &path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+  return ext == ".obj" || ext == ".ply" || ext == ".gltf" || ext == ".glb";
+}
+
+// The meshes of |input|: the file itself, or the mesh files of the folder.
+std::vector<fs::path> ListMeshes(const fs::path &input) {
+  std::vector<fs::path> meshes;
+  if (fs::is_directory(input)) {
+    for (const auto &entry : fs::directory_iterator(input)) {
+      if (entry.is_regular_file() && IsMeshFile(entry.path())) {
+        meshes.push_back(entry.path());
+      }
+    }
+    std::sort(meshes.begin(), meshes.end());
+  } else {
+    meshes.push_back(input);
+  }
+  return meshes;
+}
+
+}  // namespace
+
+int main(int argc, char **argv) {
+  Args args;
+  if (!ParseArgs(argc, argv, &args)) {
+    Usage();
+    return argc > 1 && (std::string(argv[1]) == "-h" ||
+                        std::string(argv[1]) == "--help")
+               ? 0
+               : 1;
+  }
+  const fs::path input(args.input);
+  if (!fs::exists(input)) {
+    fprintf(stderr, "Error: %s does not exist.\n", args.input.c_str());
+    return 1;
+  }
+  const std::vector<fs::path> meshes = ListMeshes(input);
+  if (meshes.empty()) {
+    fprintf(stderr, "Error: no OBJ, PLY, glTF or GLB files in %s.\n",
+            args.input.c_str());
+    return 1;
+  }
+  draco::UvEvalReport report(draco::ReadMeshKinds(input));
+  int failures = 0;
+  for (size_t i = 0; i < meshes.size(); ++i) {
+    const std::string name = meshes[i].stem().string();
+    if (args.progress) {
+      fprintf(stderr, "[%zu/%zu] %s\n", i + 1, meshes.size(), name.c_str());
+    }
+    auto mesh = draco::ReadMeshFromFile(meshes[i].string());
+    if (!mesh.ok()) {
+      fprintf(stderr, "Error: cannot read %s: %s\n", meshes[i].c_str(),
+              mesh.status().error_msg());
+      ++failures;
+      continue;
+    }
+    auto rows = draco::EvaluateMesh(name, *mesh.value(), args.options);
+    if (!rows.ok()) {
+      fprintf(stderr, "Error: %s\n", rows.status().error_msg());
+      ++failures;
+      continue;
+    }
+    report.Add(rows.value());
+    printf("%s\n", draco::FormatMeshTable(rows.value()).c_str());
+  }
+  printf("%s", report.FormatSummary().c_str());
+  if (!args.csv.empty() && !report.WriteCsv(args.csv)) {
+    fprintf(stderr, "Error: cannot write %s\n", args.csv.c_str());
+    return 1;
+  }
+  if (!args.plot.empty() && !report.WritePlot(args.plot)) {
+    fprintf(stderr, "Error: cannot write the chart %s\n", args.plot.c_str());
+    return 1;
+  }
+  if (!report.AllRoundTripsOk()) {
+    fprintf(stderr, "Error: a round trip did not reproduce the UVs.\n");
+    return 2;
+  }
+  return failures == 0 ? 0 : 1;
+}
