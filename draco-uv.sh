@@ -1,0 +1,68 @@
+#!/usr/bin/env bash
+# The two commands of draco-uv, each doing all set-up on Debian 12:
+#
+#   ./draco-uv.sh demo   installs what is missing, builds, and runs the main
+#                        job: draco_uv_eval on a bundled mesh.
+#   ./draco-uv.sh test   installs what is missing, builds, and runs every test
+#                        (ours and Draco's own unit tests).
+#
+# BUILD_DIR (default: build) selects the build folder. Extra arguments after
+# the command go to cmake at configure time (e.g. -DDRACO_SOURCE_DIR=...).
+set -euo pipefail
+cd "$(dirname "$0")"
+
+readonly BUILD_DIR=${BUILD_DIR:-build}
+# Build tools, Draco's dependencies as Debian packages them, Debian's stock
+# Draco (for the compatibility tests), Python with matplotlib (charts) and
+# clang (the cross-compiler determinism check).
+readonly PACKAGES=(
+  ca-certificates cmake g++ git ninja-build dpkg-dev xz-utils
+  libeigen3-dev libtinygltf-dev libstb-dev nlohmann-json3-dev googletest
+  draco python3 python3-matplotlib clang
+)
+
+die() { echo "draco-uv.sh: $*" >&2; exit 1; }
+
+install_missing_packages() {
+  local missing=() package
+  for package in "${PACKAGES[@]}"; do
+    dpkg-query -W -f='${Status}\n' "${package}" 2>/dev/null |
+      grep -q '^install ok installed$' || missing+=("${package}")
+  done
+  [[ ${#missing[@]} -eq 0 ]] && return
+  if [[ $(id -u) -ne 0 ]]; then
+    die "missing packages; run as root or install them: apt-get install ${missing[*]}"
+  fi
+  echo "draco-uv.sh: installing ${missing[*]}"
+  DEBIAN_FRONTEND=noninteractive apt-get update -q
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -q --no-install-recommends \
+    "${missing[@]}"
+}
+
+build() {
+  cmake -S . -B "${BUILD_DIR}" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@"
+  cmake --build "${BUILD_DIR}" --parallel "$(nproc)"
+}
+
+main() {
+  [[ $# -ge 1 ]] || die "usage: $0 demo|test [cmake arguments]"
+  local command=$1
+  shift
+  case "${command}" in
+    demo)
+      install_missing_packages
+      build "$@"
+      "${BUILD_DIR}/draco/draco_uv_eval" testdata/bumpy_cube_sphere.obj \
+        --qt 10,12 --plot "${BUILD_DIR}/bumpy_cube_sphere_rd.png"
+      echo "Rate-distortion chart: ${BUILD_DIR}/bumpy_cube_sphere_rd.png"
+      ;;
+    test)
+      install_missing_packages
+      build "$@"
+      ctest --test-dir "${BUILD_DIR}" --output-on-failure --parallel "$(nproc)"
+      ;;
+    *) die "unknown command '${command}'; use demo or test" ;;
+  esac
+}
+
+main "$@"
