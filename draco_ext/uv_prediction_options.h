@@ -21,8 +21,12 @@
 //   multi_parallelogram
 //                    MESH_PREDICTION_CONSTRAINED_MULTI_PARALLELOGRAM
 //   portable         MESH_PREDICTION_TEX_COORDS_PORTABLE
-//   weighted         MESH_PREDICTION_TEX_COORDS_WEIGHTED (draco-uv)
-//   auto             per attribute, the smallest of all of the above
+//   weighted         MESH_PREDICTION_TEX_COORDS_WEIGHTED (draco-uv), decodes
+//                    as fast as stock Draco
+//   weighted_multi   MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI: weighted
+//                    with every stencil; smaller, slower to decode
+//   auto             per attribute, the smallest of the above schemes that
+//                    decode as fast as stock (all but weighted_multi)
 #ifndef DRACO_EXT_UV_PREDICTION_OPTIONS_H_
 #define DRACO_EXT_UV_PREDICTION_OPTIONS_H_
 
