@@ -28,11 +28,6 @@ constexpr char kAutoName[] = "auto";
 // connectivity that mesh prediction schemes need.
 constexpr int kSequentialEncodingSpeed = 10;
 
-bool NeedsQuantizedPositions(PredictionSchemeMethod method) {
-  return method == MESH_PREDICTION_TEX_COORDS_PORTABLE ||
-         method == MESH_PREDICTION_TEX_COORDS_WEIGHTED;
-}
-
 std::vector<int> TexCoordAttributeIds(const Mesh &mesh) {
   std::vector<int> ids;
   for (int i = 0; i < mesh.NumNamedAttributes(GeometryAttribute::TEX_COORD);
@@ -63,7 +58,7 @@ Status CheckCommonSettings(const ExpertEncoder &encoder, int att_id) {
 // Checks what |method| needs beyond CheckCommonSettings().
 Status CheckSettingsFor(PredictionSchemeMethod method, const Mesh &mesh,
                         const ExpertEncoder &encoder) {
-  if (NeedsQuantizedPositions(method)) {
+  if (UvPredictionNeedsQuantizedPositions(method)) {
     const int pos_id = mesh.GetNamedAttributeId(GeometryAttribute::POSITION);
     if (pos_id < 0) {
       return Status(Status::DRACO_ERROR,
@@ -188,6 +183,18 @@ std::string UvPredictionNameOf(PredictionSchemeMethod method) {
     }
   }
   return std::to_string(static_cast<int>(method));
+}
+
+bool UvPredictionNeedsQuantizedPositions(PredictionSchemeMethod method) {
+  return method == MESH_PREDICTION_TEX_COORDS_PORTABLE ||
+         method == MESH_PREDICTION_TEX_COORDS_WEIGHTED;
+}
+
+bool IsDracoUvPredictionMethod(PredictionSchemeMethod method) {
+  // MESH_PREDICTION_GEOMETRIC_NORMAL is the last id of stock Draco 1.5.5 to
+  // 1.5.7; draco-uv's ids follow it (patches/0001).
+  return method > MESH_PREDICTION_GEOMETRIC_NORMAL &&
+         method < NUM_PREDICTION_SCHEMES;
 }
 
 StatusOr<std::string> ConfigureUvPrediction(const std::string &name,
