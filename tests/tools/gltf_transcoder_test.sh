@@ -93,7 +93,7 @@ for asset in "${assets[@]}"; do
   "${our_encoder}" -i "${work}/stock_gltf/out.gltf" -o "${work}/ours.drc" \
     >/dev/null 2>&1 || continue
   if "${our_encoder}" -i "${uv_file}" -o "${work}/ours.drc" >/dev/null 2>&1 &&
-     "${our_uv_eval}" "${uv_file}" --schemes draco,weighted --qt 10 --repeat 1 \
+     "${our_uv_eval}" "${uv_file}" --schemes draco --qt 10 --repeat 1 \
        --quiet >/dev/null 2>&1; then
     read_back=$((read_back + 1))
   else
