@@ -34,10 +34,6 @@ bool IsWeighted(PredictionSchemeMethod method) {
          method == MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI;
 }
 
-bool NeedsQuantizedPositions(PredictionSchemeMethod method) {
-  return method == MESH_PREDICTION_TEX_COORDS_PORTABLE || IsWeighted(method);
-}
-
 std::vector<int> TexCoordAttributeIds(const Mesh &mesh) {
   std::vector<int> ids;
   for (int i = 0; i < mesh.NumNamedAttributes(GeometryAttribute::TEX_COORD);
@@ -76,7 +72,7 @@ Status CheckSettingsFor(PredictionSchemeMethod method, const Mesh &mesh,
                       " supports -qt up to " +
                       std::to_string(kUvStencilMaxUvQuantizationBits) + ".");
   }
-  if (NeedsQuantizedPositions(method)) {
+  if (UvPredictionNeedsQuantizedPositions(method)) {
     const int pos_id = mesh.GetNamedAttributeId(GeometryAttribute::POSITION);
     if (pos_id < 0) {
       return Status(Status::DRACO_ERROR,
@@ -205,6 +201,17 @@ std::string UvPredictionNameOf(PredictionSchemeMethod method) {
     }
   }
   return std::to_string(static_cast<int>(method));
+}
+
+bool UvPredictionNeedsQuantizedPositions(PredictionSchemeMethod method) {
+  return method == MESH_PREDICTION_TEX_COORDS_PORTABLE || IsWeighted(method);
+}
+
+bool IsDracoUvPredictionMethod(PredictionSchemeMethod method) {
+  // MESH_PREDICTION_GEOMETRIC_NORMAL is the last id of stock Draco 1.5.5 to
+  // 1.5.7; draco-uv's ids follow it (patches/0001).
+  return method > MESH_PREDICTION_GEOMETRIC_NORMAL &&
+         method < NUM_PREDICTION_SCHEMES;
 }
 
 StatusOr<std::string> ConfigureUvPrediction(const std::string &name,

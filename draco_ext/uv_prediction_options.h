@@ -64,6 +64,13 @@ bool IsAutoUvPrediction(const std::string &name);
 // PREDICTION_UNDEFINED, or the numeric id for methods without a name).
 std::string UvPredictionNameOf(PredictionSchemeMethod method);
 
+// True for the methods that predict from quantized positions.
+bool UvPredictionNeedsQuantizedPositions(PredictionSchemeMethod method);
+
+// True for the prediction scheme ids that stock Draco does not define (all
+// of draco-uv's): a file using one needs a decoder with draco-uv.
+bool IsDracoUvPredictionMethod(PredictionSchemeMethod method);
+
 // Applies -uv_pred |name| to every TEX_COORD attribute of |mesh| on
 // |encoder|, whose options must already be set. An empty name or "draco"
 // leaves the encoder untouched, so the output stays byte-identical to stock
