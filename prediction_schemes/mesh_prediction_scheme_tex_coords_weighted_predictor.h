@@ -470,28 +470,26 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::Update(
 
 namespace uv_prediction_internal {
 
-// The stencil of the face through which Draco's traversal reached entry
-// |p| (Draco's order: the known entries are those below |p|) and the known
-// vertices of that face and of B as neighbours. Returns the number of
-// stencils, 0 or 1.
+// The stencil of the face of |corner| if its other two vertices are known
+// (entries below |p|, Draco's order), with B if known too, and those known
+// vertices as neighbours (up to 3). Returns the number of stencils, 0 or 1.
 template <class MeshDataT>
-int ReachStencil(const MeshDataT &mesh_data, int p,
-                 UvStencilPlan::Stencil *stencil, int32_t *neighbours,
-                 int *num_neighbours) {
+int StencilOfCorner(const MeshDataT &mesh_data, int p, CornerIndex corner,
+                    UvStencilPlan::Stencil *stencil, int32_t *neighbours,
+                    int *num_neighbours) {
   const auto &table = *mesh_data.corner_table();
   const auto &vertex_to_entry = *mesh_data.vertex_to_data_map();
-  const auto known_entry = [&](CornerIndex corner) -> int32_t {
-    if (corner == kInvalidCornerIndex) {
+  const auto known_entry = [&](CornerIndex c) -> int32_t {
+    if (c == kInvalidCornerIndex) {
       return UvCornerGraph::kNone;
     }
-    const VertexIndex v = table.Vertex(corner);
+    const VertexIndex v = table.Vertex(c);
     if (v == kInvalidVertexIndex || v.value() >= vertex_to_entry.size()) {
       return UvCornerGraph::kNone;
     }
     const int32_t entry = vertex_to_entry[v.value()];
     return entry >= 0 && entry < p ? entry : UvCornerGraph::kNone;
   };
-  const CornerIndex corner = (*mesh_data.data_to_corner_map())[p];
   const int32_t l = known_entry(table.Next(corner));
   const int32_t r = known_entry(table.Previous(corner));
   const int32_t b = known_entry(table.Opposite(corner));
@@ -503,6 +501,47 @@ int ReachStencil(const MeshDataT &mesh_data, int p,
   }
   *stencil = {l, r, b};
   return l != UvCornerGraph::kNone && r != UvCornerGraph::kNone && l != r;
+}
+
+// The stencil of the face through which Draco's traversal reached entry
+// |p|. When that face has none (Draco's traversal never crosses its start
+// face's third edge, so it may restart a chart next to known vertices), the
+// first face around the vertex that has one, swinging left then right;
+// without any, the known vertices of the reach face.
+template <class MeshDataT>
+int ReachStencil(const MeshDataT &mesh_data, int p,
+                 UvStencilPlan::Stencil *stencil, int32_t *neighbours,
+                 int *num_neighbours) {
+  const auto &table = *mesh_data.corner_table();
+  const CornerIndex reach = (*mesh_data.data_to_corner_map())[p];
+  if (StencilOfCorner(mesh_data, p, reach, stencil, neighbours,
+                      num_neighbours)) {
+    return 1;
+  }
+  UvStencilPlan::Stencil other;
+  int32_t other_neighbours[3];
+  int num_other_neighbours;
+  CornerIndex corner = table.SwingLeft(reach);
+  bool swinging_left = true;
+  for (int steps = 0; steps < table.num_corners() && corner != reach; ++steps) {
+    if (corner == kInvalidCornerIndex) {
+      if (!swinging_left) {
+        break;
+      }
+      swinging_left = false;
+      corner = table.SwingRight(reach);
+      continue;
+    }
+    if (StencilOfCorner(mesh_data, p, corner, &other, other_neighbours,
+                        &num_other_neighbours)) {
+      *stencil = other;
+      std::copy(other_neighbours, other_neighbours + 3, neighbours);
+      *num_neighbours = num_other_neighbours;
+      return 1;
+    }
+    corner = swinging_left ? table.SwingLeft(corner) : table.SwingRight(corner);
+  }
+  return 0;
 }
 
 }  // namespace uv_prediction_internal
