@@ -14,11 +14,12 @@ cd "$(dirname "$0")"
 readonly BUILD_DIR=${BUILD_DIR:-build}
 # Build tools, Draco's dependencies as Debian packages them, Debian's stock
 # Draco (for the compatibility tests), Python with matplotlib (charts) and
-# clang (the cross-compiler determinism check).
+# clang with its sanitizer and libFuzzer runtimes (the determinism check and
+# scripts/fuzz.sh).
 readonly PACKAGES=(
   ca-certificates cmake g++ git ninja-build dpkg-dev xz-utils
   libeigen3-dev libtinygltf-dev libstb-dev nlohmann-json3-dev googletest
-  draco python3 python3-matplotlib clang
+  draco python3 python3-matplotlib clang libclang-rt-dev
 )
 # Commands the tests need, each with the Debian package that provides it;
 # a command already on PATH (e.g. from another Node.js distribution) is used
