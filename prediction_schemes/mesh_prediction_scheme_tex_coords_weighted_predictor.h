@@ -55,7 +55,7 @@ namespace draco {
 //   c  the weighted parallelogram of eq. (3)-(4) when B, the vertex across
 //      LR, is known (exact for locally affine parameterisations), else s;
 //   s  the similarity (conformal) rule; its side of LR comes from B, else
-//      from the majority orientation of the faces known so far, so no
+//      from the opposite vertices of the last step that had any, so no
 //      orientation bit is sent;
 //   a  the parallelogram vL + vR - vB when B is known.
 // Candidates combine all stencils: mean of c and s, mean of c, mean of s,
@@ -145,10 +145,13 @@ class MeshPredictionSchemeTexCoordsWeightedPredictor {
            kind_ == UvPredictorKind::kReachAdaptive;
   }
   void CachePositions();
+  // Sets positions_ from |value|(entry, component), shifted as documented.
+  template <class ValueT>
+  void ShiftPositions(ValueT value);
   void SelectStencils(const Stencil *stencils, int num_stencils);
-  int OrientationFor(const Uv &f, const Uv &g, bool has_b) const;
+  int OrientationFor(const Uv &f, const Uv &g, bool has_b);
   void PredictStencil(const Stencil &stencil, int32_t tip,
-                      const DataTypeT *data, Uv *affine, Uv *similarity) const;
+                      const DataTypeT *data, Uv *affine, Uv *similarity);
   void ComputeCandidates(int32_t tip, const DataTypeT *data);
   void ComputeFallback(int step, const DataTypeT *data);
   int ChooseCandidate() const;
@@ -166,8 +169,10 @@ class MeshPredictionSchemeTexCoordsWeightedPredictor {
   std::vector<uint32_t> magnitude_;
   // Per candidate: the recent prediction errors, decaying (adaptive kinds).
   std::array<int64_t, kNumCandidates> recent_error_ = {};
-  int64_t positive_faces_ = 0;
-  int64_t negative_faces_ = 0;
+  // Orientation the opposite vertices of the last step that had any gave
+  // (+1 before any), and the sum of the current step's.
+  int last_orientation_ = 1;
+  int step_orientation_sum_ = 0;
 
   // State of the current step.
   const Stencil *stencils_ = nullptr;
@@ -183,43 +188,52 @@ class MeshPredictionSchemeTexCoordsWeightedPredictor {
 template <typename DataTypeT>
 void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::
     CachePositions() {
-  // Two passes over the attribute (reading is cheaper than a temporary
-  // copy): the minimum and the range of each component, then the shifted
-  // values.
-  const auto read = [&](int entry, int64_t value[3]) {
-    const AttributeValueIndex index =
-        pos_attribute_->mapped_index(entry_to_point_id_map_[entry]);
-    if (pos_attribute_->data_type() == DT_INT32) {
-      int32_t raw[3];
-      std::memcpy(raw, pos_attribute_->GetAddress(index), sizeof(raw));
-      std::copy(raw, raw + 3, value);
-    } else {
-      pos_attribute_->ConvertValue(index, 3, value);
+  positions_.resize(num_entries_);
+  if (pos_attribute_->data_type() == DT_INT32) {
+    // Decoding: one copy of Draco's portable positions, shifted in place.
+    for (int entry = 0; entry < num_entries_; ++entry) {
+      std::memcpy(positions_[entry].data(),
+                  pos_attribute_->GetAddress(pos_attribute_->mapped_index(
+                      entry_to_point_id_map_[entry])),
+                  sizeof(Pos));
     }
-  };
+    ShiftPositions(
+        [&](int entry, int i) { return int64_t{positions_[entry][i]}; });
+    return;
+  }
+  std::vector<std::array<int64_t, 3>> values(num_entries_);
+  for (int entry = 0; entry < num_entries_; ++entry) {
+    pos_attribute_->ConvertValue(
+        pos_attribute_->mapped_index(entry_to_point_id_map_[entry]), 3,
+        values[entry].data());
+  }
+  ShiftPositions([&](int entry, int i) { return values[entry][i]; });
+}
+
+template <typename DataTypeT>
+template <class ValueT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::ShiftPositions(
+    ValueT value) {
+  // Each component minus its minimum; integer attributes of any width fit
+  // once shifted below 2^30.
   int64_t min_value[3], max_value[3];
   std::fill(min_value, min_value + 3, std::numeric_limits<int64_t>::max());
   std::fill(max_value, max_value + 3, std::numeric_limits<int64_t>::lowest());
-  int64_t value[3];
   for (int entry = 0; entry < num_entries_; ++entry) {
-    read(entry, value);
     for (int i = 0; i < 3; ++i) {
-      min_value[i] = std::min(min_value[i], value[i]);
-      max_value[i] = std::max(max_value[i], value[i]);
+      min_value[i] = std::min(min_value[i], value(entry, i));
+      max_value[i] = std::max(max_value[i], value(entry, i));
     }
   }
-  // Integer attributes of any width fit once shifted below 2^30.
   uint64_t range = 0;
   for (int i = 0; i < 3 && num_entries_ > 0; ++i) {
     range = std::max(range, static_cast<uint64_t>(max_value[i] - min_value[i]));
   }
   const int shift = std::max(0, BitLength(range) - 30);
-  positions_.resize(num_entries_);
   for (int entry = 0; entry < num_entries_; ++entry) {
-    read(entry, value);
     for (int i = 0; i < 3; ++i) {
       positions_[entry][i] =
-          static_cast<int32_t>((value[i] - min_value[i]) >> shift);
+          static_cast<int32_t>((value(entry, i) - min_value[i]) >> shift);
     }
   }
 }
@@ -233,8 +247,8 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::Start(
   CachePositions();
   magnitude_.assign(num_entries_, 0);
   recent_error_.fill(0);
-  positive_faces_ = 0;
-  negative_faces_ = 0;
+  last_orientation_ = 1;
+  step_orientation_sum_ = 0;
 }
 
 template <typename DataTypeT>
@@ -265,22 +279,27 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::SelectStencils(
 
 template <typename DataTypeT>
 int MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::OrientationFor(
-    const Uv &f, const Uv &g, bool has_b) const {
+    const Uv &f, const Uv &g, bool has_b) {
   // Face (O, L, R) has the orientation of face (B, R, L) across LR, whose
-  // UV area has the sign of -cross(f, g), f = vR - vL, g = vB - vL.
+  // UV area has the sign of -cross(f, g), f = vR - vL, g = vB - vL. Without
+  // B, the orientation the opposite vertices of earlier steps gave. (Within
+  // a step the stencils' order differs between encoder and decoder, so a
+  // step only accumulates and Update() takes the sign of the sum.)
   if (has_b) {
     const int64_t cross = f[0] * g[1] - f[1] * g[0];
     if (cross != 0) {
-      return cross > 0 ? -1 : 1;
+      const int orientation = cross > 0 ? -1 : 1;
+      step_orientation_sum_ += orientation;
+      return orientation;
     }
   }
-  return negative_faces_ > positive_faces_ ? -1 : 1;
+  return last_orientation_;
 }
 
 template <typename DataTypeT>
 void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::PredictStencil(
     const Stencil &stencil, int32_t tip, const DataTypeT *data, Uv *affine,
-    Uv *similarity) const {
+    Uv *similarity) {
   const Uv uv_l = UvOf(data, stencil.l);
   const Uv uv_r = UvOf(data, stencil.r);
   const bool has_b = stencil.b != UvCornerGraph::kNone;
@@ -429,6 +448,10 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::Update(
   constexpr uint64_t kMaxError = uint64_t{1} << 20;
   const int32_t tip = order_->entries[step];
   const Uv value = UvOf(data, tip);
+  if (step_orientation_sum_ != 0) {
+    last_orientation_ = step_orientation_sum_ > 0 ? 1 : -1;
+    step_orientation_sum_ = 0;
+  }
   magnitude_[tip] = static_cast<uint32_t>(
       std::min<uint64_t>(std::numeric_limits<uint32_t>::max(),
                          AbsAsUnsigned(correction[0]) +
@@ -443,39 +466,30 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::Update(
                           recent_error_[k] / 16;
     }
   }
-  // The stencil faces are the faces this entry completes.
-  for (int i = 0; i < num_stencils_; ++i) {
-    const int sign = SignOfCross(UvOf(data, stencils_[i].l) - value,
-                                 UvOf(data, stencils_[i].r) - value);
-    positive_faces_ += sign > 0;
-    negative_faces_ += sign < 0;
-  }
 }
 
 namespace uv_prediction_internal {
 
-// The stencil of the face through which Draco's traversal reached entry
-// |p| (Draco's order: the known entries are those below |p|) and the known
-// vertices of that face and of B as neighbours. Returns the number of
-// stencils, 0 or 1.
+// The stencil of the face of |corner| if its other two vertices are known
+// (entries below |p|, Draco's order), with B if known too, and those known
+// vertices as neighbours (up to 3). Returns the number of stencils, 0 or 1.
 template <class MeshDataT>
-int ReachStencil(const MeshDataT &mesh_data, int p,
-                 UvStencilPlan::Stencil *stencil, int32_t *neighbours,
-                 int *num_neighbours) {
+int StencilOfCorner(const MeshDataT &mesh_data, int p, CornerIndex corner,
+                    UvStencilPlan::Stencil *stencil, int32_t *neighbours,
+                    int *num_neighbours) {
   const auto &table = *mesh_data.corner_table();
   const auto &vertex_to_entry = *mesh_data.vertex_to_data_map();
-  const auto known_entry = [&](CornerIndex corner) -> int32_t {
-    if (corner == kInvalidCornerIndex) {
+  const auto known_entry = [&](CornerIndex c) -> int32_t {
+    if (c == kInvalidCornerIndex) {
       return UvCornerGraph::kNone;
     }
-    const VertexIndex v = table.Vertex(corner);
+    const VertexIndex v = table.Vertex(c);
     if (v == kInvalidVertexIndex || v.value() >= vertex_to_entry.size()) {
       return UvCornerGraph::kNone;
     }
     const int32_t entry = vertex_to_entry[v.value()];
     return entry >= 0 && entry < p ? entry : UvCornerGraph::kNone;
   };
-  const CornerIndex corner = (*mesh_data.data_to_corner_map())[p];
   const int32_t l = known_entry(table.Next(corner));
   const int32_t r = known_entry(table.Previous(corner));
   const int32_t b = known_entry(table.Opposite(corner));
@@ -487,6 +501,47 @@ int ReachStencil(const MeshDataT &mesh_data, int p,
   }
   *stencil = {l, r, b};
   return l != UvCornerGraph::kNone && r != UvCornerGraph::kNone && l != r;
+}
+
+// The stencil of the face through which Draco's traversal reached entry
+// |p|. When that face has none (Draco's traversal never crosses its start
+// face's third edge, so it may restart a chart next to known vertices), the
+// first face around the vertex that has one, swinging left then right;
+// without any, the known vertices of the reach face.
+template <class MeshDataT>
+int ReachStencil(const MeshDataT &mesh_data, int p,
+                 UvStencilPlan::Stencil *stencil, int32_t *neighbours,
+                 int *num_neighbours) {
+  const auto &table = *mesh_data.corner_table();
+  const CornerIndex reach = (*mesh_data.data_to_corner_map())[p];
+  if (StencilOfCorner(mesh_data, p, reach, stencil, neighbours,
+                      num_neighbours)) {
+    return 1;
+  }
+  UvStencilPlan::Stencil other;
+  int32_t other_neighbours[3];
+  int num_other_neighbours;
+  CornerIndex corner = table.SwingLeft(reach);
+  bool swinging_left = true;
+  for (int steps = 0; steps < table.num_corners() && corner != reach; ++steps) {
+    if (corner == kInvalidCornerIndex) {
+      if (!swinging_left) {
+        break;
+      }
+      swinging_left = false;
+      corner = table.SwingRight(reach);
+      continue;
+    }
+    if (StencilOfCorner(mesh_data, p, corner, &other, other_neighbours,
+                        &num_other_neighbours)) {
+      *stencil = other;
+      std::copy(other_neighbours, other_neighbours + 3, neighbours);
+      *num_neighbours = num_other_neighbours;
+      return 1;
+    }
+    corner = swinging_left ? table.SwingLeft(corner) : table.SwingRight(corner);
+  }
+  return 0;
 }
 
 }  // namespace uv_prediction_internal
