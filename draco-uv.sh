@@ -4,7 +4,9 @@
 #   ./draco-uv.sh demo   installs what is missing, builds, and runs the main
 #                        job: draco_uv_eval on a bundled mesh.
 #   ./draco-uv.sh test   installs what is missing, builds, and runs every test
-#                        (ours and Draco's own unit tests).
+#                        (ours and Draco's own unit tests), including a
+#                        libFuzzer smoke run and the cross-build determinism
+#                        check in extra clang builds.
 #
 # BUILD_DIR (default: build) selects the build folder. Extra arguments after
 # the command go to cmake at configure time (e.g. -DDRACO_SOURCE_DIR=...).
@@ -68,6 +70,12 @@ main() {
     test)
       install_missing_packages
       build "$@"
+      # The sanitizer build for the fuzz smoke run (tools.fuzz_smoke); the
+      # determinism check (tools.determinism) builds its own flavours. Both
+      # tests skip with a message without clang.
+      if command -v clang++ >/dev/null; then
+        scripts/fuzz.sh build
+      fi
       ctest --test-dir "${BUILD_DIR}" --output-on-failure --parallel "$(nproc)"
       ;;
     *) die "unknown command '${command}'; use demo or test" ;;

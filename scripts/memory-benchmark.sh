@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Peak memory (maximum resident set size, /usr/bin/time -v) of encoding and
-# decoding with draco-uv's schemes against Debian's stock draco_encoder and
+# decoding with draco-uv's schemes (weighted, auto, weighted_multi) against Debian's stock draco_encoder and
 # draco_decoder at the same settings (stock has no -uv_pred: it uses its
 # own texture coordinate prediction). Target: within 1.5x of stock.
 #
@@ -20,7 +20,9 @@ if [[ ${#meshes[@]} -eq 0 ]]; then
   meshes=("${corpus}/meshes/stk_abyss_track.obj" "${corpus}/meshes/khr_sheencloth.obj")
 fi
 readonly SETTINGS="-cl 10 -qp 14 -qt 12"
-readonly SCHEMES=(weighted weighted_multi)
+# "none": our build without -uv_pred (stock coding), to separate the
+# schemes' cost from the build's.
+readonly SCHEMES=(none weighted auto weighted_multi)
 readonly LIMIT=1.5
 our_encoder="${build_dir}/draco/draco_encoder"
 our_decoder="${build_dir}/draco/draco_decoder"
@@ -53,8 +55,10 @@ for mesh in "${meshes[@]}"; do
   stock_enc=$(peak_mb /usr/bin/draco_encoder -i "${mesh}" -o "${work}/stock.drc" ${SETTINGS})
   stock_dec=$(peak_mb /usr/bin/draco_decoder -i "${work}/stock.drc" -o "${work}/stock.obj")
   for scheme in "${SCHEMES[@]}"; do
+    uv_pred=()
+    [[ ${scheme} == none ]] || uv_pred=(-uv_pred "${scheme}")
     # shellcheck disable=SC2086
-    enc=$(peak_mb "${our_encoder}" -i "${mesh}" -o "${work}/ours.drc" ${SETTINGS} -uv_pred "${scheme}")
+    enc=$(peak_mb "${our_encoder}" -i "${mesh}" -o "${work}/ours.drc" ${SETTINGS} "${uv_pred[@]}")
     dec=$(peak_mb "${our_decoder}" -i "${work}/ours.drc" -o "${work}/ours.obj")
     enc_ratio=$(ratio "${enc}" "${stock_enc}")
     dec_ratio=$(ratio "${dec}" "${stock_dec}")
