@@ -143,7 +143,6 @@ StatusOr<size_t> EncodedSize(ExpertEncoder *encoder) {
   return buffer.size();
 }
 
-
 // Candidates of -uv_pred auto: every scheme that decodes about as fast as
 // stock Draco (so not weighted_multi). Stock Draco's choice comes first so
 // that it wins ties.

@@ -31,10 +31,10 @@
 // Meshes with NaN or infinite values are only given to draco-uv schemes,
 // which must refuse them: stock Draco's quantizer converts such values to
 // integers (undefined behaviour), which is stock behaviour, not ours.
+#include <fuzzer/FuzzedDataProvider.h>
+
 #include <cstdio>
 #include <cstdlib>
-
-#include <fuzzer/FuzzedDataProvider.h>
 
 #include "draco_ext/uv_prediction_options.h"
 #include "tests/uv_soup_mesh.h"
@@ -46,12 +46,18 @@ using draco::SoupMesh;
 float ConsumeCoordinate(FuzzedDataProvider *provider) {
   const uint8_t kind = provider->ConsumeIntegral<uint8_t>();
   switch (kind) {
-    case 250: return std::nanf("");
-    case 251: return INFINITY;
-    case 252: return -INFINITY;
-    case 253: return 1e30f;
-    case 254: return -1e7f;
-    case 255: return provider->ConsumeFloatingPoint<float>();
+    case 250:
+      return std::nanf("");
+    case 251:
+      return INFINITY;
+    case 252:
+      return -INFINITY;
+    case 253:
+      return 1e30f;
+    case 254:
+      return -1e7f;
+    case 255:
+      return provider->ConsumeFloatingPoint<float>();
     default:
       // A coarse grid: coincident and collinear values are common.
       return (static_cast<int>(kind % 17) - 8) * 0.25f;
@@ -63,7 +69,8 @@ SoupMesh ConsumeSoup(FuzzedDataProvider *provider) {
   const uint8_t flags = provider->ConsumeIntegral<uint8_t>();
   const int num_positions =
       flags % 29 == 0 ? 0 : provider->ConsumeIntegralInRange(1, 24);
-  const int num_uvs = flags % 31 == 1 ? 0 : provider->ConsumeIntegralInRange(1, 24);
+  const int num_uvs =
+      flags % 31 == 1 ? 0 : provider->ConsumeIntegralInRange(1, 24);
   const int num_faces = provider->ConsumeIntegralInRange(1, 40);
   for (int i = 0; i < num_positions; ++i) {
     soup.positions.push_back({ConsumeCoordinate(provider),
@@ -80,8 +87,9 @@ SoupMesh ConsumeSoup(FuzzedDataProvider *provider) {
       face.position[i] = provider->ConsumeIntegralInRange(0, 23);
       // Mostly the UV of the same index (a seamless chart), sometimes
       // another (seams).
-      face.uv[i] = provider->ConsumeBool() ? face.position[i]
-                                           : provider->ConsumeIntegralInRange(0, 23);
+      face.uv[i] = provider->ConsumeBool()
+                       ? face.position[i]
+                       : provider->ConsumeIntegralInRange(0, 23);
     }
     soup.faces.push_back(face);
   }
@@ -90,8 +98,10 @@ SoupMesh ConsumeSoup(FuzzedDataProvider *provider) {
 
 [[noreturn]] void Fail(const char *what, const draco::UvEncodeSettings &s,
                        const std::string &detail) {
-  fprintf(stderr, "draco_uv_roundtrip_fuzzer: %s (-qp %d -qt %d -cl %d -uv_pred %s): %s\n",
-          what, s.qp, s.qt, s.cl, s.uv_pred.c_str(), detail.c_str());
+  fprintf(
+      stderr,
+      "draco_uv_roundtrip_fuzzer: %s (-qp %d -qt %d -cl %d -uv_pred %s): %s\n",
+      what, s.qp, s.qt, s.cl, s.uv_pred.c_str(), detail.c_str());
   abort();
 }
 

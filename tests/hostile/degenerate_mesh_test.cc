@@ -40,7 +40,8 @@ SoupMesh BumpyGrid(int n = 5) {
     for (int i = 0; i <= n; ++i) {
       soup.positions.push_back(
           {static_cast<float>(i), static_cast<float>(j), 0.1f * ((i * j) % 3)});
-      soup.uvs.push_back({i / static_cast<float>(n), j / static_cast<float>(n)});
+      soup.uvs.push_back(
+          {i / static_cast<float>(n), j / static_cast<float>(n)});
     }
   }
   for (int j = 0; j < n; ++j) {
@@ -76,9 +77,8 @@ std::string Label(const UvEncodeSettings &s) {
 void ExpectExactRoundTrips(const Mesh &mesh, const std::string &name) {
   for (const UvEncodeSettings &settings : SettingsGrid()) {
     const UvRoundTrip result = RoundTripAgainstStock(mesh, settings);
-    ASSERT_TRUE(result.encoded.ok())
-        << name << " " << Label(settings) << ": "
-        << result.encoded.error_msg_string();
+    ASSERT_TRUE(result.encoded.ok()) << name << " " << Label(settings) << ": "
+                                     << result.encoded.error_msg_string();
     ASSERT_TRUE(result.decoded.ok()) << name << " " << Label(settings);
     ASSERT_TRUE(result.stock_encoded) << name << " " << Label(settings);
     EXPECT_TRUE(result.identical) << name << " " << Label(settings);
@@ -145,8 +145,8 @@ TEST(DegenerateMeshTest, FacesCollapsedOntoOnePositionRoundTripExactly) {
 TEST(DegenerateMeshTest, ZeroAreaUvTrianglesRoundTripExactly) {
   SoupMesh soup = BumpyGrid();
   for (int i = 0; i <= 5; ++i) {
-    soup.uvs[i] = {0.5f, 0.5f};                  // Coincident.
-    soup.uvs[12 + i] = {0.1f * i, 0.1f * i};      // Collinear rows.
+    soup.uvs[i] = {0.5f, 0.5f};               // Coincident.
+    soup.uvs[12 + i] = {0.1f * i, 0.1f * i};  // Collinear rows.
     soup.uvs[18 + i] = {0.1f * i + 0.05f, 0.1f * i + 0.05f};
   }
   ExpectExactRoundTrips(*BuildSoupMesh(soup), "zero-area UV");
@@ -183,7 +183,8 @@ TEST(DegenerateMeshTest, NonManifoldEdgesAndIsolatedTrianglesRoundTripExactly) {
     soup.positions.push_back({10.f + k, 10.f + k * k, -5.f});
     soup.uvs.push_back({2.f + k, -1.f});
   }
-  soup.faces.push_back({{base + 3, base + 4, base + 5}, {base + 3, base + 4, base + 5}});
+  soup.faces.push_back(
+      {{base + 3, base + 4, base + 5}, {base + 3, base + 4, base + 5}});
   soup.faces.push_back({{35, base + 4, base + 5}, {35, base + 4, base + 5}});
   ExpectExactRoundTrips(*BuildSoupMesh(soup), "non-manifold");
 }
@@ -272,9 +273,11 @@ TEST(DegenerateMeshTest, AwkwardCorpusMeshesRoundTripExactly) {
     ASSERT_TRUE(mesh.ok()) << path;
     for (const char *scheme : {"weighted", "weighted_multi"}) {
       for (const UvEncodeSettings settings :
-           {UvEncodeSettings{6, 4, 10, scheme}, {8, 20, 5, scheme},
+           {UvEncodeSettings{6, 4, 10, scheme},
+            {8, 20, 5, scheme},
             {14, 16, 1, scheme}}) {
-        const UvRoundTrip result = RoundTripAgainstStock(*mesh.value(), settings);
+        const UvRoundTrip result =
+            RoundTripAgainstStock(*mesh.value(), settings);
         ASSERT_TRUE(result.encoded.ok() && result.decoded.ok())
             << path << " " << Label(settings) << ": "
             << result.encoded.error_msg_string();

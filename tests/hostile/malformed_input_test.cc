@@ -59,8 +59,9 @@ std::vector<GoldenFile> GoldenFiles() {
       files.push_back(std::move(file));
     }
   }
-  std::sort(files.begin(), files.end(),
-            [](const GoldenFile &a, const GoldenFile &b) { return a.name < b.name; });
+  std::sort(
+      files.begin(), files.end(),
+      [](const GoldenFile &a, const GoldenFile &b) { return a.name < b.name; });
   return files;
 }
 
@@ -146,8 +147,8 @@ TEST(MalformedInputTest, BitFlipsDecodeOrFailWithAMessage) {
     std::vector<size_t> bits;
     const int guard = GuardOffset(file.data);
     if (guard >= 0) {
-      const size_t end = std::min(file.data.size(),
-                                  static_cast<size_t>(guard + kHeaderBytes));
+      const size_t end =
+          std::min(file.data.size(), static_cast<size_t>(guard + kHeaderBytes));
       for (size_t bit = 8 * guard; bit < 8 * end; ++bit) {
         bits.push_back(bit);
       }
