@@ -4,7 +4,9 @@
 #   ./draco-uv.sh demo   installs what is missing, builds, and runs the main
 #                        job: draco_uv_eval on a bundled mesh.
 #   ./draco-uv.sh test   installs what is missing, builds, and runs every test
-#                        (ours and Draco's own unit tests).
+#                        (ours and Draco's own unit tests), including a
+#                        libFuzzer smoke run and the cross-build determinism
+#                        check in extra clang builds.
 #
 # BUILD_DIR (default: build) selects the build folder. Extra arguments after
 # the command go to cmake at configure time (e.g. -DDRACO_SOURCE_DIR=...).
@@ -14,11 +16,12 @@ cd "$(dirname "$0")"
 readonly BUILD_DIR=${BUILD_DIR:-build}
 # Build tools, Draco's dependencies as Debian packages them, Debian's stock
 # Draco (for the compatibility tests), Python with matplotlib (charts) and
-# clang (the cross-compiler determinism check).
+# clang with its sanitizer and libFuzzer runtimes (the determinism check and
+# scripts/fuzz.sh).
 readonly PACKAGES=(
   ca-certificates cmake g++ git ninja-build dpkg-dev xz-utils
   libeigen3-dev libtinygltf-dev libstb-dev nlohmann-json3-dev googletest
-  draco python3 python3-matplotlib clang
+  draco python3 python3-matplotlib clang libclang-rt-dev
 )
 # Commands the tests need, each with the Debian package that provides it;
 # a command already on PATH (e.g. from another Node.js distribution) is used
@@ -67,6 +70,12 @@ main() {
     test)
       install_missing_packages
       build "$@"
+      # The sanitizer build for the fuzz smoke run (tools.fuzz_smoke); the
+      # determinism check (tools.determinism) builds its own flavours. Both
+      # tests skip with a message without clang.
+      if command -v clang++ >/dev/null; then
+        scripts/fuzz.sh build
+      fi
       ctest --test-dir "${BUILD_DIR}" --output-on-failure --parallel "$(nproc)"
       ;;
     *) die "unknown command '${command}'; use demo or test" ;;

@@ -62,7 +62,10 @@ struct UvCornerGraph {
 };
 
 // Copies the connectivity of |mesh_data| (a MeshPredictionSchemeData).
-// Entries outside [0, number of entries) become kNone.
+// Entries outside [0, number of entries) become kNone. So do all corners of
+// faces that are degenerate in the position connectivity (two corners on one
+// position vertex): Draco's edgebreaker encoder drops those faces, so the
+// decoder never sees them, and neither may the encoder's predictions.
 template <class MeshDataT>
 void BuildUvCornerGraph(const MeshDataT &mesh_data, UvCornerGraph *graph) {
   const auto &table = *mesh_data.corner_table();
@@ -70,22 +73,30 @@ void BuildUvCornerGraph(const MeshDataT &mesh_data, UvCornerGraph *graph) {
   const int32_t num_entries =
       static_cast<int32_t>(mesh_data.data_to_corner_map()->size());
   const int num_corners = table.num_corners();
+  const auto is_dropped = [&](CornerIndex corner) {
+    return table.IsDegenerated(table.Face(corner));
+  };
   graph->entry.resize(num_corners);
   graph->opposite.resize(num_corners);
   for (int c = 0; c < num_corners; ++c) {
     const CornerIndex corner(c);
+    graph->entry[c] = graph->opposite[c] = UvCornerGraph::kNone;
+    if (is_dropped(corner)) {
+      continue;
+    }
     const VertexIndex v = table.Vertex(corner);
     int32_t entry = UvCornerGraph::kNone;
     if (v != kInvalidVertexIndex && v.value() < vertex_to_entry.size()) {
       entry = vertex_to_entry[v.value()];
     }
-    graph->entry[c] =
-        entry >= 0 && entry < num_entries ? entry : UvCornerGraph::kNone;
+    if (entry >= 0 && entry < num_entries) {
+      graph->entry[c] = entry;
+    }
     const CornerIndex opposite = table.Opposite(corner);
-    graph->opposite[c] =
-        opposite == kInvalidCornerIndex || opposite.value() >= num_corners
-            ? UvCornerGraph::kNone
-            : static_cast<int32_t>(opposite.value());
+    if (opposite != kInvalidCornerIndex && opposite.value() < num_corners &&
+        !is_dropped(opposite)) {
+      graph->opposite[c] = static_cast<int32_t>(opposite.value());
+    }
   }
 }
 

@@ -14,7 +14,9 @@
 //
 #include "draco_ext/uv_prediction_options.h"
 
+#include <cmath>
 #include <limits>
+#include <vector>
 
 #include "draco/core/encoder_buffer.h"
 #include "prediction_schemes/uv_stencil_geometry.h"
@@ -61,6 +63,51 @@ Status CheckCommonSettings(const ExpertEncoder &encoder, int att_id) {
   return OkStatus();
 }
 
+std::string AttributeLabel(const Mesh &mesh, int att_id) {
+  int index = 0;
+  while (mesh.GetNamedAttributeId(GeometryAttribute::TEX_COORD, index) !=
+         att_id) {
+    ++index;
+  }
+  return "TEX_COORD " + std::to_string(index) + " (attribute " +
+         std::to_string(att_id) + ")";
+}
+
+// True when the floating point attribute |att| holds a NaN or an infinity.
+bool HasNonFiniteValue(const PointAttribute &att) {
+  if (att.data_type() != DT_FLOAT32 && att.data_type() != DT_FLOAT64) {
+    return false;
+  }
+  std::vector<double> value(att.num_components());
+  for (AttributeValueIndex i(0); i < static_cast<uint32_t>(att.size()); ++i) {
+    att.ConvertValue(i, att.num_components(), value.data());
+    for (const double x : value) {
+      if (!std::isfinite(x)) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+// Draco quantizes NaN and infinities to arbitrary integers (only the first
+// value is checked), so draco-uv's schemes refuse them instead of
+// predicting from them.
+Status CheckFiniteValues(PredictionSchemeMethod method, const Mesh &mesh,
+                         int att_id) {
+  const int pos_id = mesh.GetNamedAttributeId(GeometryAttribute::POSITION);
+  for (const int id : {att_id, pos_id}) {
+    if (id >= 0 && HasNonFiniteValue(*mesh.attribute(id))) {
+      return Status(Status::DRACO_ERROR,
+                    "-uv_pred " + UvPredictionNameOf(method) + ": " +
+                        (id == pos_id ? std::string("POSITION")
+                                      : AttributeLabel(mesh, att_id)) +
+                        " has NaN or infinite values.");
+    }
+  }
+  return OkStatus();
+}
+
 // Checks what |method| needs beyond CheckCommonSettings() to code the
 // TEX_COORD attribute |att_id|.
 Status CheckSettingsFor(PredictionSchemeMethod method, const Mesh &mesh,
@@ -84,6 +131,9 @@ Status CheckSettingsFor(PredictionSchemeMethod method, const Mesh &mesh,
                     "-uv_pred needs quantized positions (-qp > 0).");
     }
   }
+  if (IsDracoUvPredictionMethod(method)) {
+    return CheckFiniteValues(method, mesh, att_id);
+  }
   return OkStatus();
 }
 
@@ -91,16 +141,6 @@ StatusOr<size_t> EncodedSize(ExpertEncoder *encoder) {
   EncoderBuffer buffer;
   DRACO_RETURN_IF_ERROR(encoder->EncodeToBuffer(&buffer));
   return buffer.size();
-}
-
-std::string AttributeLabel(const Mesh &mesh, int att_id) {
-  int index = 0;
-  while (mesh.GetNamedAttributeId(GeometryAttribute::TEX_COORD, index) !=
-         att_id) {
-    ++index;
-  }
-  return "TEX_COORD " + std::to_string(index) + " (attribute " +
-         std::to_string(att_id) + ")";
 }
 
 // Candidates of -uv_pred auto: every scheme that decodes about as fast as

@@ -506,8 +506,9 @@ int StencilOfCorner(const MeshDataT &mesh_data, int p, CornerIndex corner,
 // The stencil of the face through which Draco's traversal reached entry
 // |p|. When that face has none (Draco's traversal never crosses its start
 // face's third edge, so it may restart a chart next to known vertices), the
-// first face around the vertex that has one, swinging left then right;
-// without any, the known vertices of the reach face.
+// first face around the vertex that has one, swinging left then right up to
+// a boundary or a degenerate face; without any, the known vertices of the
+// reach face.
 template <class MeshDataT>
 int ReachStencil(const MeshDataT &mesh_data, int p,
                  UvStencilPlan::Stencil *stencil, int32_t *neighbours,
@@ -524,7 +525,10 @@ int ReachStencil(const MeshDataT &mesh_data, int p,
   CornerIndex corner = table.SwingLeft(reach);
   bool swinging_left = true;
   for (int steps = 0; steps < table.num_corners() && corner != reach; ++steps) {
-    if (corner == kInvalidCornerIndex) {
+    // Faces degenerate in the position connectivity are not coded (see
+    // BuildUvCornerGraph()): the decoder has a boundary there.
+    if (corner == kInvalidCornerIndex ||
+        table.IsDegenerated(table.Face(corner))) {
       if (!swinging_left) {
         break;
       }

@@ -1,0 +1,276 @@
+// Copyright 2026 The draco-uv Authors.
+//
+// Licensed under the Apache License, Version 2.0 (the "License");
+// you may not use this file except in compliance with the License.
+// You may obtain a copy of the License at
+//
+//      http://www.apache.org/licenses/LICENSE-2.0
+//
+// Unless required by applicable law or agreed to in writing, software
+// distributed under the License is distributed on an "AS IS" BASIS,
+// WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+// See the License for the specific language governing permissions and
+// limitations under the License.
+//
+// The decoder treats its input as hostile: every golden file
+// (testdata/golden/, one per mesh and row of variants.tsv, so new schemes
+// are covered by adding a row) truncated at every byte, with bits flipped,
+// with the draco-uv header fields and the prediction scheme id replaced by
+// unknown values and with huge counts either decodes or fails with a
+// message; it never crashes, hangs or allocates without bound. The
+// sanitizer builds of scripts/fuzz.sh go further on the same seeds.
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <cstring>
+#include <filesystem>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "draco/compression/decode.h"
+#include "draco/io/file_utils.h"
+#include "draco_ext/uv_bitstream_guard.h"
+#include "gtest/gtest.h"
+#include "prediction_schemes/mesh_prediction_scheme_tex_coords_weighted_shared.h"
+#include "tests/draco_uv_test_utils.h"
+
+namespace draco {
+namespace {
+
+namespace fs = std::filesystem;
+
+// Peak resident memory a test in this file may reach: decoding the small
+// golden files needs a few MB; a count taken from corrupt data and
+// allocated as such would go far beyond.
+constexpr long kMaxPeakRssKb = 512 * 1024;
+
+struct GoldenFile {
+  std::string name;
+  std::vector<char> data;
+};
+
+std::vector<GoldenFile> GoldenFiles() {
+  std::vector<GoldenFile> files;
+  for (const auto &entry : fs::directory_iterator(UvTestdataPath("golden"))) {
+    if (entry.path().extension() == ".drc") {
+      GoldenFile file{entry.path().filename().string(), {}};
+      EXPECT_TRUE(ReadFileToBuffer(entry.path().string(), &file.data));
+      files.push_back(std::move(file));
+    }
+  }
+  std::sort(
+      files.begin(), files.end(),
+      [](const GoldenFile &a, const GoldenFile &b) { return a.name < b.name; });
+  return files;
+}
+
+// Decodes |size| bytes of |data|; an error must carry a message.
+Status Decode(const char *data, size_t size) {
+  DecoderBuffer buffer;
+  buffer.Init(data, size);
+  Decoder decoder;
+  const Status status = decoder.DecodeMeshFromBuffer(&buffer).status();
+  EXPECT_TRUE(status.ok() || !status.error_msg_string().empty());
+  return status;
+}
+
+Status Decode(const std::vector<char> &data) {
+  return Decode(data.data(), data.size());
+}
+
+long PeakRssKb() {
+  rusage usage;
+  getrusage(RUSAGE_SELF, &usage);
+  return usage.ru_maxrss;
+}
+
+// Offset of the draco-uv bitstream guard in |data|, or -1 (stock files).
+int GuardOffset(const std::vector<char> &data) {
+  char guard[8];
+  const int32_t words[2] = {kUvGuardFirst, kUvGuardSecond};
+  std::memcpy(guard, words, sizeof(guard));
+  const auto it = std::search(data.begin(), data.end(), guard, guard + 8);
+  return it == data.end() ? -1 : static_cast<int>(it - data.begin());
+}
+
+// The golden files of the weighted schemes (variants named weighted*),
+// whose header layout UnknownHeaderValuesAreRejected knows. Other schemes'
+// golden files get the layout-free tests (truncation, bit flips) by just
+// being in testdata/golden/.
+std::vector<GoldenFile> WeightedGoldenFiles() {
+  std::vector<GoldenFile> files = GoldenFiles();
+  files.erase(std::remove_if(files.begin(), files.end(),
+                             [](const GoldenFile &f) {
+                               return GuardOffset(f.data) < 0 ||
+                                      f.name.find(".weighted") ==
+                                          std::string::npos;
+                             }),
+              files.end());
+  return files;
+}
+
+TEST(MalformedInputTest, GoldenFilesDecode) {
+  const std::vector<GoldenFile> files = GoldenFiles();
+  ASSERT_FALSE(files.empty()) << "run scripts/make-golden.sh";
+  ASSERT_FALSE(WeightedGoldenFiles().empty());
+  for (const GoldenFile &file : files) {
+    EXPECT_TRUE(Decode(file.data).ok()) << file.name;
+  }
+}
+
+TEST(MalformedInputTest, EveryTruncationFailsWithAMessage) {
+  int tried = 0;
+  for (const GoldenFile &file : GoldenFiles()) {
+    for (size_t size = 0; size < file.data.size(); ++size) {
+      // A copy of exactly |size| bytes, so that ASan-free builds still
+      // read nothing past the end unnoticed by the decoder's checks.
+      const std::vector<char> prefix(file.data.begin(),
+                                     file.data.begin() + size);
+      EXPECT_FALSE(Decode(prefix).ok()) << file.name << " cut at " << size;
+      ++tried;
+    }
+  }
+  EXPECT_LT(PeakRssKb(), kMaxPeakRssKb);
+  RecordProperty("truncations", tried);
+}
+
+// Every bit of the draco-uv header and the first residual bytes, and random
+// bits anywhere; a flipped residual may decode to other values, which is
+// fine, as long as nothing crashes.
+TEST(MalformedInputTest, BitFlipsDecodeOrFailWithAMessage) {
+  constexpr int kHeaderBytes = 48;
+  constexpr int kRandomFlipsPerFile = 600;
+  std::mt19937 rng(5);
+  int tried = 0, failed = 0;
+  for (const GoldenFile &file : GoldenFiles()) {
+    std::vector<size_t> bits;
+    const int guard = GuardOffset(file.data);
+    if (guard >= 0) {
+      const size_t end =
+          std::min(file.data.size(), static_cast<size_t>(guard + kHeaderBytes));
+      for (size_t bit = 8 * guard; bit < 8 * end; ++bit) {
+        bits.push_back(bit);
+      }
+    }
+    std::uniform_int_distribution<size_t> any_bit(0, 8 * file.data.size() - 1);
+    for (int i = 0; i < kRandomFlipsPerFile; ++i) {
+      bits.push_back(any_bit(rng));
+    }
+    std::vector<char> data = file.data;
+    for (const size_t bit : bits) {
+      data[bit / 8] ^= static_cast<char>(1 << (bit % 8));
+      failed += !Decode(data).ok();
+      data[bit / 8] ^= static_cast<char>(1 << (bit % 8));
+      ++tried;
+    }
+  }
+  EXPECT_GT(failed, 0);
+  EXPECT_LT(PeakRssKb(), kMaxPeakRssKb);
+  RecordProperty("bit_flips", tried);
+  RecordProperty("bit_flips_rejected", failed);
+}
+
+// The fields after the guard: format version, configuration byte and the
+// residual coder's use_contexts byte; then the first token count (varint).
+TEST(MalformedInputTest, UnknownHeaderValuesAreRejected) {
+  const std::vector<GoldenFile> files = WeightedGoldenFiles();
+  ASSERT_FALSE(files.empty());
+  int tried = 0;
+  for (const GoldenFile &file : files) {
+    const int guard = GuardOffset(file.data);
+    const int version = guard + 8, config = guard + 9, contexts = guard + 10;
+    const auto expect_rejected = [&](int offset, int value) {
+      std::vector<char> data = file.data;
+      data[offset] = static_cast<char>(value);
+      EXPECT_FALSE(Decode(data).ok())
+          << file.name << ": byte " << offset << " = " << value;
+      ++tried;
+    };
+    for (int byte = 0; byte < 8; ++byte) {
+      expect_rejected(guard + byte, file.data[guard + byte] ^ 0x10);
+    }
+    for (const int value : {0, 1, 3, 255}) {
+      expect_rejected(version, value);
+    }
+    for (int value = 7; value < 256; ++value) {
+      expect_rejected(config, value);
+    }
+    for (int value = 2; value < 256; ++value) {
+      expect_rejected(contexts, value);
+    }
+    // A token count of 2^32 - 1, far above the number of residuals.
+    std::vector<char> huge(file.data.begin(), file.data.begin() + contexts + 1);
+    huge.insert(huge.end(), {'\xff', '\xff', '\xff', '\xff', '\x0f'});
+    huge.insert(huge.end(), file.data.begin() + contexts + 2, file.data.end());
+    EXPECT_FALSE(Decode(huge).ok()) << file.name << ": huge token count";
+    ++tried;
+  }
+  EXPECT_LT(PeakRssKb(), kMaxPeakRssKb);
+  RecordProperty("header_values", tried);
+}
+
+// The prediction scheme id of the texture coordinates: the first byte at
+// which a draco-uv golden file differs from the stock one of the same mesh
+// and settings (positions and connectivity come first and are identical).
+int PredictionIdOffset(const std::vector<char> &ours,
+                       const std::vector<char> &stock) {
+  const auto mismatch =
+      std::mismatch(ours.begin(), ours.end(), stock.begin(), stock.end());
+  return static_cast<int>(mismatch.first - ours.begin());
+}
+
+TEST(MalformedInputTest, UnknownOrMismatchedPredictionIdsAreRejected) {
+  int tried = 0;
+  for (const std::string mesh : {"torus_uv", "bumpy_cube_sphere", "cube_att"}) {
+    std::vector<char> stock, weighted, multi;
+    ASSERT_TRUE(ReadFileToBuffer(
+        UvTestdataPath("golden/" + mesh + ".stock.drc"), &stock));
+    ASSERT_TRUE(ReadFileToBuffer(
+        UvTestdataPath("golden/" + mesh + ".weighted.drc"), &weighted));
+    ASSERT_TRUE(ReadFileToBuffer(
+        UvTestdataPath("golden/" + mesh + ".weighted_multi.drc"), &multi));
+    const int id = PredictionIdOffset(weighted, stock);
+    ASSERT_EQ(id, PredictionIdOffset(multi, stock)) << mesh;
+    ASSERT_EQ(weighted[id], MESH_PREDICTION_TEX_COORDS_WEIGHTED) << mesh;
+    ASSERT_EQ(multi[id], MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI) << mesh;
+    // Ids no decoder knows (beyond the enum, so that schemes added to it
+    // later do not turn them into valid ids).
+    const int num_ids = NUM_PREDICTION_SCHEMES;
+    for (const int value :
+         {num_ids, num_ids + 1, 42, 127, PREDICTION_NONE - 1, -128}) {
+      for (std::vector<char> data : {weighted, multi}) {
+        data[id] = static_cast<char>(value);
+        EXPECT_FALSE(Decode(data).ok()) << mesh << ": id " << value;
+        ++tried;
+      }
+    }
+    // Every transform type byte (it follows the id).
+    for (int value = -128; value < 128; ++value) {
+      std::vector<char> data = weighted;
+      data[id + 1] = static_cast<char>(value);
+      Decode(data);
+      ++tried;
+    }
+    // The multi-stencil id accepts the single-stencil configuration (it may
+    // use every configuration); the single-stencil id promises stock speed
+    // and rejects multi-stencil data.
+    std::vector<char> relabelled = weighted;
+    relabelled[id] = MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI;
+    const auto as_multi = DecodeDracoMesh(relabelled);
+    const auto original = DecodeDracoMesh(weighted);
+    ASSERT_TRUE(as_multi.ok() && original.ok()) << mesh;
+    EXPECT_EQ(CornerValues(*as_multi.value(), GeometryAttribute::TEX_COORD),
+              CornerValues(*original.value(), GeometryAttribute::TEX_COORD));
+    UvPredictionConfig config;
+    ASSERT_TRUE(config.FromByte(multi[GuardOffset(multi) + 9]));
+    relabelled = multi;
+    relabelled[id] = MESH_PREDICTION_TEX_COORDS_WEIGHTED;
+    EXPECT_EQ(Decode(relabelled).ok(), UsesReachStencil(config.kind)) << mesh;
+    tried += 2;
+  }
+  RecordProperty("prediction_ids", tried);
+}
+
+}  // namespace
+}  // namespace draco
