@@ -29,11 +29,21 @@ list(
 list(
   APPEND draco_compression_decode_sources
          "${draco_uv_ext}/uv_residual_coder.cc"
-         "${draco_uv_ext}/uv_residual_coder.h")
+         "${draco_uv_ext}/uv_residual_coder.h"
+         "${draco_uv_ext}/uv_seam_bit_model.cc"
+         "${draco_uv_ext}/uv_seam_bit_model.h"
+         "${draco_uv_ext}/uv_seam_coder.cc"
+         "${draco_uv_ext}/uv_seam_coder.h"
+         "${draco_uv_ext}/uv_seam_range_coder.cc"
+         "${draco_uv_ext}/uv_seam_range_coder.h"
+         "${draco_uv_ext}/uv_seam_topology.cc"
+         "${draco_uv_ext}/uv_seam_topology.h")
 
 list(
   APPEND draco_compression_encode_sources
          "${draco_uv_ext}/uv_encode_settings.cc"
          "${draco_uv_ext}/uv_encode_settings.h"
          "${draco_uv_ext}/uv_prediction_options.cc"
-         "${draco_uv_ext}/uv_prediction_options.h")
+         "${draco_uv_ext}/uv_prediction_options.h"
+         "${draco_uv_ext}/uv_seam_options.cc"
+         "${draco_uv_ext}/uv_seam_options.h")
