@@ -18,10 +18,10 @@
 #include <cmath>
 
 #include "draco/compression/bit_coders/rans_bit_encoder.h"
-#include "draco/compression/decode.h"
+#include "draco/compression/mesh/mesh_edgebreaker_decoder.h"
 #include "draco/core/varint_encoding.h"
 #include "draco/mesh/mesh_attribute_corner_table.h"
-#include "draco/mesh/mesh_misc_functions.h"
+#include "draco_ext/uv_seam_edgebreaker.h"
 #include "draco_ext/uv_seam_range_coder.h"
 
 namespace draco {
@@ -108,24 +108,20 @@ StatusOr<UvSeamProblem> BuildUvSeamProblem(const Mesh &mesh,
   stock.uv_seams.clear();
   EncoderBuffer encoded;
   DRACO_RETURN_IF_ERROR(EncodeMeshWithSettings(mesh, stock, &encoded));
+  // Draco's Edgebreaker decoder itself, to read its corner tables.
   DecoderBuffer buffer;
   buffer.Init(encoded.data(), encoded.size());
-  Decoder decoder;
-  DRACO_ASSIGN_OR_RETURN(const std::unique_ptr<Mesh> decoded,
-                         decoder.DecodeMeshFromBuffer(&buffer));
-  const std::unique_ptr<CornerTable> table =
-      CreateCornerTableFromPositionAttribute(decoded.get());
-  if (table == nullptr) {
-    return Status(Status::DRACO_ERROR, "No corner table for the mesh.");
+  DracoHeader header;
+  DRACO_RETURN_IF_ERROR(PointCloudDecoder::DecodeHeader(&buffer, &header));
+  if (header.encoder_method != MESH_EDGEBREAKER_ENCODING) {
+    return Status(Status::DRACO_ERROR, "Seams need Edgebreaker (-cl 1..10).");
   }
-  std::vector<int32_t> opposite(table->num_corners());
-  for (CornerIndex c(0); c < table->num_corners(); ++c) {
-    const CornerIndex o = table->Opposite(c);
-    opposite[c.value()] =
-        o == kInvalidCornerIndex ? UvSeamTopology::kBoundary : o.value();
-  }
+  buffer.Init(encoded.data(), encoded.size());
+  MeshEdgebreakerDecoder decoder;
+  Mesh decoded;
+  DRACO_RETURN_IF_ERROR(decoder.Decode(DecoderOptions(), &buffer, &decoded));
   UvSeamProblem problem;
-  if (!problem.topology.Init(opposite)) {
+  if (!problem.topology.Init(OppositesOf(*decoder.GetCornerTable()))) {
     return Status(Status::DRACO_ERROR, "Invalid decoded connectivity.");
   }
   // Draco's attribute data: the non-position attributes in attribute order.
@@ -134,17 +130,17 @@ StatusOr<UvSeamProblem> BuildUvSeamProblem(const Mesh &mesh,
     if (att->attribute_type() == GeometryAttribute::POSITION) {
       continue;
     }
-    const PointAttribute *const decoded_att =
-        decoded->GetAttributeByUniqueId(att->unique_id());
-    MeshAttributeCornerTable att_table;
-    if (decoded_att == nullptr ||
-        !att_table.InitFromAttribute(decoded.get(), table.get(),
-                                     decoded_att)) {
+    const int decoded_id = decoded.GetAttributeIdByUniqueId(att->unique_id());
+    if (decoded_id < 0) {
       return Status(Status::DRACO_ERROR, "Attribute lost in decoding.");
     }
-    UvSeamFlags flags(problem.topology.num_edges());
-    for (int32_t e = 0; e < problem.topology.num_edges(); ++e) {
-      flags[e] = att_table.IsCornerOppositeToSeamEdge(
+    // Null for attributes Draco codes per vertex: they have no seams.
+    const MeshAttributeCornerTable *const att_table =
+        decoder.GetAttributeCornerTable(decoded_id);
+    UvSeamFlags flags(problem.topology.num_edges(), 0);
+    for (int32_t e = 0; att_table != nullptr && e < problem.topology.num_edges();
+         ++e) {
+      flags[e] = att_table->IsCornerOppositeToSeamEdge(
           CornerIndex(problem.topology.EdgeCorner(e)));
     }
     problem.seams.push_back(std::move(flags));

@@ -27,9 +27,11 @@
 //  * draco-uv's crease-bit coder (-uv_seams context, uv_seam_coder.h),
 //    exactly as the encoder writes it;
 //
-// all on the same bits: those of Draco's Edgebreaker for the mesh, in its
-// decoder's face order, for every non-position attribute. The first two are
-// real range-coded sizes (UvSeamRangeEncoder), not entropy estimates.
+// all on the same bits: those of Draco's Edgebreaker for the mesh, read
+// from the corner tables of Draco's own decoder (so in its face order, with
+// its treatment of non-manifold edges), for every non-position attribute.
+// The first two are real range-coded sizes (UvSeamRangeEncoder), not
+// entropy estimates; the last two are exactly the bytes in Draco files.
 #ifndef DRACO_EXT_UV_SEAM_STATS_H_
 #define DRACO_EXT_UV_SEAM_STATS_H_
 
@@ -64,14 +66,14 @@ struct UvSeamStats {
 };
 
 // Draco's Edgebreaker seam bits of every non-position attribute of a mesh,
-// on the topology of its decoder.
+// on the topology of its decoder, in Draco's attribute data order.
 struct UvSeamProblem {
   UvSeamTopology topology;
   std::vector<UvSeamFlags> seams;  // [attribute][edge].
 };
 
-// Encodes |mesh| with |settings| (stock seam coding), decodes it and builds
-// the seam problem in the decoder's face order.
+// Encodes |mesh| with |settings| (stock seam coding) and decodes it with
+// Draco's MeshEdgebreakerDecoder, whose corner tables give the problem.
 StatusOr<UvSeamProblem> BuildUvSeamProblem(const Mesh &mesh,
                                            const UvEncodeSettings &settings);
 
