@@ -26,6 +26,13 @@ namespace {
 
 constexpr uint8_t kUndecided = 2;
 
+// Zero bits coded at probability 1/2 after the seams: a corrupt stream
+// decodes them as zeros with probability 2^-14 only (the range coder's own
+// checks catch truncation and trailing bytes, not altered ones). 14 bits
+// rather than 16 keep the smallest meshes below stock Draco's seam bytes.
+constexpr int kNumCheckBits = 14;
+constexpr uint32_t kCheckBitProbability = kUvSeamProbabilityOne / 2;
+
 // Rings longer than this are decided in ring order (bounds the work on
 // high-valence vertices; real rings are rarely longer than 10).
 constexpr int kMaxScoredRing = 16;
@@ -334,6 +341,9 @@ std::vector<uint8_t> EncodeUvSeams(const UvSeamTopology &topology,
     walker.CodeAttribute(&attribute_seams, earlier, &decided);
     MergeSeams(attribute_seams, &earlier);
   }
+  for (int i = 0; i < kNumCheckBits; ++i) {
+    io.Code(kCheckBitProbability, false);
+  }
   return io.coder()->Finish();
 }
 
@@ -348,7 +358,11 @@ bool DecodeUvSeams(const UvSeamTopology &topology, int num_attributes,
     walker.CodeAttribute(nullptr, earlier, &attribute_seams);
     MergeSeams(attribute_seams, &earlier);
   }
-  return io.coder().Finish();
+  bool checks_ok = true;
+  for (int i = 0; i < kNumCheckBits; ++i) {
+    checks_ok = !io.Code(kCheckBitProbability, false) && checks_ok;
+  }
+  return checks_ok && io.coder().Finish();
 }
 
 }  // namespace draco

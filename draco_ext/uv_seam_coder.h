@@ -61,13 +61,15 @@ namespace draco {
 typedef std::vector<uint8_t> UvSeamFlags;
 
 // Codes the seams of every attribute (|seams|[i] has one flag per edge of
-// |topology|) and returns the coded bytes.
+// |topology|), then 14 check bits, and returns the coded bytes.
 std::vector<uint8_t> EncodeUvSeams(const UvSeamTopology &topology,
                                    const std::vector<UvSeamFlags> &seams);
 
 // Decodes |num_attributes| seam flag sets from |size| bytes at |data|;
 // false if the bytes are not a complete stream of EncodeUvSeams() for
-// |topology| (detected with high probability, see UvSeamRangeDecoder).
+// |topology| and |num_attributes|: 14 check bits after the seams catch
+// altered bytes (all but a 2^-14 fraction of them), the range coder's tail
+// truncation and trailing bytes.
 bool DecodeUvSeams(const UvSeamTopology &topology, int num_attributes,
                    const uint8_t *data, size_t size,
                    std::vector<UvSeamFlags> *seams);

@@ -22,9 +22,9 @@
 // The stream ends with the shortest tail that pins the final interval: the
 // encoder emits the value in [low, low + range) with the most trailing zero
 // bits and drops trailing zero bytes, which the decoder reads back as
-// zeros. Because the decoder can recompute that value, Finish() verifies
-// the tail, so altered or truncated streams are rejected with a probability
-// of about 1 - 2^-24 instead of decoding to other seams.
+// zeros. The decoder recomputes that value, so Finish() rejects streams
+// with bytes missing or added at the end. Altered bytes only change the
+// decoded bits; callers that must notice them code check bits.
 #ifndef DRACO_EXT_UV_SEAM_RANGE_CODER_H_
 #define DRACO_EXT_UV_SEAM_RANGE_CODER_H_
 
@@ -69,7 +69,7 @@ class UvSeamRangeDecoder {
   bool DecodeBit(uint32_t probability_of_one);
 
   // True if the stream ends exactly with the tail the encoder writes after
-  // the bits decoded so far.
+  // the bits decoded so far, and has no bytes beyond it.
   bool Finish() const;
 
  private:
