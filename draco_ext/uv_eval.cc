@@ -29,6 +29,7 @@
 #include "draco/mesh/mesh_attribute_corner_table.h"
 #include "draco/mesh/mesh_misc_functions.h"
 #include "draco_ext/uv_encode_settings.h"
+#include "draco_ext/uv_seam_stats.h"
 
 namespace draco {
 
@@ -323,9 +324,10 @@ StatusOr<UvEvalBaseline> MeasureBaseline(const Mesh &mesh, const Mesh &without,
                                          const UvEvalOptions &options,
                                          int qt) {
   UvEvalBaseline baseline;
-  UvEncodeSettings settings{options.qp, 0, options.cl, ""};
+  UvEncodeSettings settings{options.qp, 0, options.cl, "", options.uv_seams};
   DRACO_ASSIGN_OR_RETURN(baseline.size_without_uvs,
                          EncodedSize(without, settings));
+  settings.uv_seams.clear();
   settings.qt = qt;
   baseline.stock_best_uv_bytes = std::numeric_limits<int64_t>::max();
   for (const int cl : {7, 10}) {
@@ -353,15 +355,23 @@ StatusOr<UvEvalRow> MeasureScheme(const std::string &name, const Mesh &mesh,
   row.qt = qt;
   row.uv_vertices = CountUvVertices(mesh);
   TimedEncoding encoding;
-  DRACO_RETURN_IF_ERROR(EncodeTimed(
-      mesh, {options.qp, qt, options.cl, scheme == "draco" ? "" : scheme},
-      options.repeat, &encoding));
+  const UvEncodeSettings settings{options.qp, qt, options.cl,
+                                  scheme == "draco" ? "" : scheme,
+                                  options.uv_seams};
+  DRACO_RETURN_IF_ERROR(
+      EncodeTimed(mesh, settings, options.repeat, &encoding));
   row.enc_ms = encoding.ms;
   DRACO_ASSIGN_OR_RETURN(const auto decoded,
                          DecodeTimed(encoding.buffer, options.repeat, &row.dec_ms));
   row.uv_bytes =
       static_cast<int64_t>(encoding.buffer.size()) - baseline.size_without_uvs;
-  row.seam_bytes = StockSeamBytes(mesh);
+  if (settings.uv_seams.empty() || settings.uv_seams == "draco") {
+    row.seam_bytes = StockSeamBytes(mesh);
+  } else {
+    DRACO_ASSIGN_OR_RETURN(const UvSeamProblem problem,
+                           BuildUvSeamProblem(mesh, settings));
+    row.seam_bytes = static_cast<double>(ContextSeamStreamBytes(problem));
+  }
   row.bpv = row.uv_vertices > 0 ? 8.0 * row.uv_bytes / row.uv_vertices : 0.0;
   row.ratio_vs_draco =
       static_cast<double>(row.uv_bytes) / baseline.stock_best_uv_bytes;

@@ -36,6 +36,9 @@ struct UvEvalOptions {
                                       "portable", "multi_parallelogram",
                                       "weighted", "auto"};
   int repeat = 3;  // Timings are the minimum over this many runs.
+  // -uv_seams name for every measured scheme ("" is stock); the reference
+  // (stock Draco's best of -cl 7 and 10) keeps stock seams.
+  std::string uv_seams;
 };
 
 // One (mesh, scheme, qt) measurement.
@@ -45,7 +48,9 @@ struct UvEvalRow {
   int qt = 0;
   int64_t uv_vertices = 0;  // Distinct (position, UV) pairs, all UV sets.
   int64_t uv_bytes = 0;     // size(with UVs) - size(without UVs).
-  double seam_bytes = 0;    // Part of uv_bytes spent on seams.
+  double seam_bytes = 0;    // Part of uv_bytes spent on seams (with
+                            // -uv_seams context: the exact stream, which
+                            // codes all non-position attributes jointly).
   double bpv = 0;           // 8 * uv_bytes / uv_vertices.
   double rmse = 0;          // Eq. (9) in UV units, all UV sets.
   double enc_ms = 0;

@@ -53,6 +53,24 @@ int EstimateFromCounts(const uint16_t n[2]) {
   return std::min(std::max(p, 1), 4095);
 }
 
+// UvSeamStretch(EstimateFromCounts(n)) for fast counters, from a table.
+int StretchedFastEstimate(const uint16_t n[2]) {
+  constexpr int kSide = kCountLimits[0] + 2;  // Counts stay below this.
+  static const std::vector<int16_t> table = [] {
+    std::vector<int16_t> values(kSide * kSide);
+    for (uint16_t n0 = 0; n0 < kSide; ++n0) {
+      for (uint16_t n1 = 0; n1 < kSide; ++n1) {
+        const uint16_t counts[2] = {n0, n1};
+        values[n0 * kSide + n1] =
+            static_cast<int16_t>(UvSeamStretch(EstimateFromCounts(counts)));
+      }
+    }
+    return values;
+  }();
+  DRACO_DCHECK(n[0] < kSide && n[1] < kSide);
+  return table[n[0] * kSide + n[1]];
+}
+
 }  // namespace
 
 int UvSeamSquash(int x) {
@@ -80,25 +98,26 @@ int UvSeamStretch(int probability) {
 }
 
 UvSeamBitModel::UvSeamBitModel(const std::vector<int> &num_contexts)
-    : active_(num_contexts.size(), 0),
+    : active_(num_contexts.size(), nullptr),
       inputs_(num_contexts.size() * kNumRates, 0),
       weights_(num_contexts.size() * kNumRates,
                static_cast<int32_t>(65536 / (num_contexts.size() * kNumRates))) {
   for (const int count : num_contexts) {
-    for (int rate = 0; rate < kNumRates; ++rate) {
-      tables_.emplace_back(count);
-    }
+    tables_.emplace_back(count);
   }
 }
 
 uint32_t UvSeamBitModel::Predict(const int *contexts) {
   int64_t dot = 0;
-  for (size_t model = 0; model < active_.size(); ++model) {
-    active_[model] = contexts[model];
+  for (int model = 0; model < num_models(); ++model) {
+    DRACO_DCHECK(contexts[model] >= 0 &&
+                 contexts[model] < static_cast<int>(tables_[model].size()));
+    active_[model] = &tables_[model][contexts[model]];
     for (int rate = 0; rate < kNumRates; ++rate) {
-      const int input = static_cast<int>(model) * kNumRates + rate;
-      const Counter &counter = tables_[input][contexts[model]];
-      inputs_[input] = UvSeamStretch(EstimateFromCounts(counter.n));
+      const int input = model * kNumRates + rate;
+      inputs_[input] = rate == 0 ? StretchedFastEstimate(active_[model]->n[0])
+                                 : UvSeamStretch(EstimateFromCounts(
+                                       active_[model]->n[rate]));
       dot += int64_t{weights_[input]} * inputs_[input];
     }
   }
@@ -111,20 +130,19 @@ uint32_t UvSeamBitModel::Predict(const int *contexts) {
 
 void UvSeamBitModel::Update(bool bit) {
   const int error = (bit ? 4096 : 0) - probability_;
-  for (int input = 0; input < num_inputs(); ++input) {
+  for (size_t input = 0; input < inputs_.size(); ++input) {
     const int64_t step =
         ShiftRightTowardZero(int64_t{inputs_[input]} * error, kLearningShift);
     weights_[input] = static_cast<int32_t>(std::min<int64_t>(
         std::max<int64_t>(weights_[input] + step, -kMaxWeight), kMaxWeight));
   }
-  for (size_t model = 0; model < active_.size(); ++model) {
+  for (Cell *const cell : active_) {
     for (int rate = 0; rate < kNumRates; ++rate) {
-      Counter &counter =
-          tables_[model * kNumRates + rate][active_[model]];
-      ++counter.n[bit];
-      if (counter.n[0] + counter.n[1] > kCountLimits[rate]) {
-        counter.n[0] = (counter.n[0] + 1) >> 1;
-        counter.n[1] = (counter.n[1] + 1) >> 1;
+      uint16_t *const n = cell->n[rate];
+      ++n[bit];
+      if (n[0] + n[1] > kCountLimits[rate]) {
+        n[0] = (n[0] + 1) >> 1;
+        n[1] = (n[1] + 1) >> 1;
       }
     }
   }

@@ -50,20 +50,19 @@ class UvSeamBitModel {
   void Update(bool bit);
 
  private:
-  struct Counter {
-    uint16_t n[2] = {0, 0};
+  static constexpr int kNumRates = 2;  // Fast and slow counters.
+  // Bit counts n[rate][bit] of one context.
+  struct Cell {
+    uint16_t n[kNumRates][2] = {{0, 0}, {0, 0}};
   };
-  static constexpr int kNumRates = 2;
 
-  int num_inputs() const { return static_cast<int>(inputs_.size()); }
+  int num_models() const { return static_cast<int>(tables_.size()); }
 
-  std::vector<std::vector<Counter>> tables_;  // [model * kNumRates + rate].
-  std::vector<int> active_;                   // Context of each model.
-  std::vector<int> inputs_;                   // Stretched estimates.
-  std::vector<int32_t> weights_;              // 16.16 fixed point.
-  int probability_ = kUvSeamHalf;
-
-  static constexpr int kUvSeamHalf = 2048;
+  std::vector<std::vector<Cell>> tables_;  // Per model, per context.
+  std::vector<Cell *> active_;             // Cell of each model.
+  std::vector<int> inputs_;                // Stretched estimates.
+  std::vector<int32_t> weights_;           // 16.16 fixed point.
+  int probability_ = 2048;                 // Last prediction.
 };
 
 }  // namespace draco

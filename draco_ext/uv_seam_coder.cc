@@ -52,6 +52,9 @@ struct Decision {
   int distance_class;
 };
 
+// What a vertex's walk knows about each edge of its ring.
+enum RingSlot : uint8_t { kOpenSlot, kJoinSlot, kCutSlot };
+
 // Builds a context index from features with known ranges.
 class MixedRadix {
  public:
@@ -169,7 +172,9 @@ class CreaseWalker {
  private:
   void Reset();
   void DecideVertex(int32_t vertex);
-  Decision Choose(int32_t vertex) const;
+  // Fills |slots| for a ring of at most kMaxScoredRing edges.
+  void ReadRing(int32_t vertex, RingSlot *slots) const;
+  Decision Choose(int32_t vertex, const RingSlot *slots) const;
   Features Describe(const Decision &decision) const;
   bool IsAnchor(int32_t edge) const {
     return edge == UvSeamTopology::kBoundary || (*state_)[edge] == 1;
@@ -225,8 +230,14 @@ void CreaseWalker<BitIoT>::Reset() {
 
 template <class BitIoT>
 void CreaseWalker<BitIoT>::DecideVertex(int32_t vertex) {
+  RingSlot slots[kMaxScoredRing];
+  const int ring_size = topology_.RingSize(vertex);
+  const int32_t *const ring = topology_.RingBegin(vertex);
+  if (ring_size <= kMaxScoredRing) {
+    ReadRing(vertex, slots);
+  }
   while (undecided_at_[vertex] > 0) {
-    const Decision decision = Choose(vertex);
+    const Decision decision = Choose(vertex, slots);
     const Features features = Describe(decision);
     const int contexts[kNumModels] = {RichContext(features).index(),
                                       EndsContext(features).index(),
@@ -236,6 +247,13 @@ void CreaseWalker<BitIoT>::DecideVertex(int32_t vertex) {
         probability, truth_ != nullptr && (*truth_)[decision.edge] != 0);
     model_.Update(seam);
     (*state_)[decision.edge] = seam;
+    if (ring_size <= kMaxScoredRing) {
+      for (int i = 0; i < ring_size; ++i) {
+        if (ring[i] == decision.edge) {
+          slots[i] = seam ? kCutSlot : kJoinSlot;
+        }
+      }
+    }
     --undecided_at_[decision.vertex];
     --undecided_at_[decision.other];
     if (seam) {
@@ -248,37 +266,49 @@ void CreaseWalker<BitIoT>::DecideVertex(int32_t vertex) {
   }
 }
 
+template <class BitIoT>
+void CreaseWalker<BitIoT>::ReadRing(int32_t vertex, RingSlot *slots) const {
+  const int32_t *const ring = topology_.RingBegin(vertex);
+  for (int i = 0; i < topology_.RingSize(vertex); ++i) {
+    slots[i] = IsUndecided(ring[i]) ? kOpenSlot
+               : IsAnchor(ring[i])  ? kCutSlot
+                                    : kJoinSlot;
+  }
+}
+
 // Picks the undecided edge of |vertex| farthest in the ring from the known
 // seams and boundaries there (the first one on ties, or if none is known).
 template <class BitIoT>
-Decision CreaseWalker<BitIoT>::Choose(int32_t vertex) const {
+Decision CreaseWalker<BitIoT>::Choose(int32_t vertex,
+                                      const RingSlot *slots) const {
   const int32_t *const ring = topology_.RingBegin(vertex);
   const int size = topology_.RingSize(vertex);
   int best = -1;
   int best_distance = -1;
-  bool any_anchor = false;
-  for (int i = 0; i < size; ++i) {
-    if (!IsUndecided(ring[i])) {
-      continue;
-    }
-    if (size > kMaxScoredRing) {
-      best = i;
-      break;
-    }
-    int distance = size;  // Larger than any ring distance.
-    for (int j = 0; j < size; ++j) {
-      if (IsAnchor(ring[j])) {
-        const int apart = i > j ? i - j : j - i;
-        distance = std::min(distance, std::min(apart, size - apart));
+  if (size > kMaxScoredRing) {
+    best = static_cast<int>(
+        std::find_if(ring, ring + size,
+                     [this](int32_t edge) { return IsUndecided(edge); }) -
+        ring);
+  } else {
+    for (int i = 0; i < size; ++i) {
+      if (slots[i] != kOpenSlot) {
+        continue;
+      }
+      int distance = size;  // Larger than any ring distance.
+      for (int j = 0; j < size; ++j) {
+        if (slots[j] == kCutSlot) {
+          const int apart = i > j ? i - j : j - i;
+          distance = std::min(distance, std::min(apart, size - apart));
+        }
+      }
+      if (distance > best_distance) {
+        best = i;
+        best_distance = distance;
       }
     }
-    any_anchor = any_anchor || distance < size;
-    if (distance > best_distance) {
-      best = i;
-      best_distance = distance;
-    }
   }
-  DRACO_DCHECK_GE(best, 0);
+  DRACO_DCHECK(best >= 0 && best < size);
   Decision decision;
   decision.vertex = vertex;
   decision.edge = ring[best];
@@ -287,7 +317,7 @@ Decision CreaseWalker<BitIoT>::Choose(int32_t vertex) const {
       end0 == vertex ? topology_.EdgeVertex(decision.edge, 1) : end0;
   if (size > kMaxScoredRing) {
     decision.distance_class = kLongRing;
-  } else if (!any_anchor) {
+  } else if (best_distance == size) {
     decision.distance_class = kNoAnchor;
   } else {
     decision.distance_class = 1 + std::min(2, 6 * best_distance / size);

@@ -53,6 +53,8 @@ void Usage() {
       "  --cl N           compression level, default 10\n"
       "  --schemes LIST   -uv_pred names, default "
       "draco,parallelogram,portable,multi_parallelogram,weighted,auto\n"
+      "  --uv_seams NAME  -uv_seams of every scheme (draco or context), "
+      "default draco\n"
       "  --repeat N       timing runs (minimum reported), default 3\n"
       "  --csv FILE       one row per (mesh, scheme, qt)\n"
       "  --plot FILE      rate-distortion chart (PNG or SVG, needs python3 "
@@ -113,6 +115,8 @@ bool ParseArgs(int argc, char **argv, Args *args) {
       }
     } else if (flag == "--schemes") {
       args->options.schemes = SplitList(argv[++i]);
+    } else if (flag == "--uv_seams") {
+      args->options.uv_seams = argv[++i];
     } else if (flag == "--csv") {
       args->csv = argv[++i];
     } else if (flag == "--plot") {
