@@ -14,22 +14,11 @@
 //
 #include "draco_ext/uv_seam_bit_model.h"
 
-#include <algorithm>
-#include <array>
-
-#include "draco/core/macros.h"
-#include "draco_ext/uv_fixed_point.h"
-
 namespace draco {
 
 namespace {
 
-// Counts are halved when their sum exceeds these limits.
-constexpr int kCountLimits[2] = {20, 2000};
-// Mixer learning rate: weights move by input * error / 2^kLearningShift.
-constexpr int kLearningShift = 10;
 constexpr int kMaxStretch = 2047;
-constexpr int32_t kMaxWeight = 1 << 22;
 
 std::array<int16_t, 4096> MakeStretchTable() {
   std::array<int16_t, 4096> table;
@@ -47,28 +36,27 @@ std::array<int16_t, 4096> MakeStretchTable() {
   return table;
 }
 
+const std::array<int16_t, 4096> &StretchTable() {
+  static const std::array<int16_t, 4096> table = MakeStretchTable();
+  return table;
+}
+
 // (n1 + 0.3) / (n0 + n1 + 0.6) in 1/4096, within [1, 4095].
 int EstimateFromCounts(const uint16_t n[2]) {
   const int p = ((10 * n[1] + 3) << 12) / (10 * (n[0] + n[1]) + 6);
   return std::min(std::max(p, 1), 4095);
 }
 
-// UvSeamStretch(EstimateFromCounts(n)) for fast counters, from a table.
-int StretchedFastEstimate(const uint16_t n[2]) {
-  constexpr int kSide = kCountLimits[0] + 2;  // Counts stay below this.
-  static const std::vector<int16_t> table = [] {
-    std::vector<int16_t> values(kSide * kSide);
-    for (uint16_t n0 = 0; n0 < kSide; ++n0) {
-      for (uint16_t n1 = 0; n1 < kSide; ++n1) {
-        const uint16_t counts[2] = {n0, n1};
-        values[n0 * kSide + n1] =
-            static_cast<int16_t>(UvSeamStretch(EstimateFromCounts(counts)));
-      }
+std::vector<int16_t> MakeFastTable() {
+  std::vector<int16_t> values(kUvSeamFastSide * kUvSeamFastSide);
+  for (uint16_t n0 = 0; n0 < kUvSeamFastSide; ++n0) {
+    for (uint16_t n1 = 0; n1 < kUvSeamFastSide; ++n1) {
+      const uint16_t counts[2] = {n0, n1};
+      values[n0 * kUvSeamFastSide + n1] =
+          static_cast<int16_t>(UvSeamStretch(EstimateFromCounts(counts)));
     }
-    return values;
-  }();
-  DRACO_DCHECK(n[0] < kSide && n[1] < kSide);
-  return table[n[0] * kSide + n[1]];
+  }
+  return values;
 }
 
 }  // namespace
@@ -92,60 +80,19 @@ int UvSeamSquash(int x) {
 }
 
 int UvSeamStretch(int probability) {
-  static const std::array<int16_t, 4096> table = MakeStretchTable();
   DRACO_DCHECK(probability >= 0 && probability < 4096);
-  return table[probability];
+  return StretchTable()[probability];
 }
 
-UvSeamBitModel::UvSeamBitModel(const std::vector<int> &num_contexts)
-    : active_(num_contexts.size(), nullptr),
-      inputs_(num_contexts.size() * kNumRates, 0),
-      weights_(num_contexts.size() * kNumRates,
-               static_cast<int32_t>(65536 / (num_contexts.size() * kNumRates))) {
-  for (const int count : num_contexts) {
-    tables_.emplace_back(count);
-  }
+constexpr int UvSeamCounts::kLimits[];
+
+const int16_t *UvSeamFastStretchTable() {
+  static const std::vector<int16_t> table = MakeFastTable();
+  return table.data();
 }
 
-uint32_t UvSeamBitModel::Predict(const int *contexts) {
-  int64_t dot = 0;
-  for (int model = 0; model < num_models(); ++model) {
-    DRACO_DCHECK(contexts[model] >= 0 &&
-                 contexts[model] < static_cast<int>(tables_[model].size()));
-    active_[model] = &tables_[model][contexts[model]];
-    for (int rate = 0; rate < kNumRates; ++rate) {
-      const int input = model * kNumRates + rate;
-      inputs_[input] = rate == 0 ? StretchedFastEstimate(active_[model]->n[0])
-                                 : UvSeamStretch(EstimateFromCounts(
-                                       active_[model]->n[rate]));
-      dot += int64_t{weights_[input]} * inputs_[input];
-    }
-  }
-  const int64_t x = ShiftRightTowardZero(dot, 16);
-  probability_ = UvSeamSquash(static_cast<int>(
-      std::min<int64_t>(std::max<int64_t>(x, -kMaxStretch - 1),
-                        kMaxStretch + 1)));
-  return static_cast<uint32_t>(probability_);
-}
-
-void UvSeamBitModel::Update(bool bit) {
-  const int error = (bit ? 4096 : 0) - probability_;
-  for (size_t input = 0; input < inputs_.size(); ++input) {
-    const int64_t step =
-        ShiftRightTowardZero(int64_t{inputs_[input]} * error, kLearningShift);
-    weights_[input] = static_cast<int32_t>(std::min<int64_t>(
-        std::max<int64_t>(weights_[input] + step, -kMaxWeight), kMaxWeight));
-  }
-  for (Cell *const cell : active_) {
-    for (int rate = 0; rate < kNumRates; ++rate) {
-      uint16_t *const n = cell->n[rate];
-      ++n[bit];
-      if (n[0] + n[1] > kCountLimits[rate]) {
-        n[0] = (n[0] + 1) >> 1;
-        n[1] = (n[1] + 1) >> 1;
-      }
-    }
-  }
+int UvSeamSlowStretch(const uint16_t n[2]) {
+  return UvSeamStretch(EstimateFromCounts(n));
 }
 
 }  // namespace draco

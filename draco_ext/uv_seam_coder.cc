@@ -15,6 +15,7 @@
 #include "draco_ext/uv_seam_coder.h"
 
 #include <algorithm>
+#include <array>
 
 #include "draco/core/macros.h"
 #include "draco_ext/uv_seam_bit_model.h"
@@ -124,7 +125,7 @@ MixedRadix RingContext(const Features &f) {
       .Add(f.earlier_seam, 2);
 }
 
-std::vector<int> ContextCounts() {
+std::array<int, kNumModels> ContextCounts() {
   const Features zero;
   return {RichContext(zero).size(), EndsContext(zero).size(),
           RingContext(zero).size()};
@@ -186,7 +187,7 @@ class CreaseWalker {
 
   const UvSeamTopology &topology_;
   BitIoT *io_;
-  UvSeamBitModel model_;
+  UvSeamBitModel<kNumModels> model_;
   const UvSeamFlags *truth_ = nullptr;
   const UvSeamFlags *earlier_ = nullptr;
   UvSeamFlags *state_ = nullptr;
@@ -222,14 +223,15 @@ void CreaseWalker<BitIoT>::Reset() {
   seams_at_.assign(topology_.num_vertices(), 0);
   undecided_at_.assign(topology_.num_vertices(), 0);
   for (int32_t vertex = 0; vertex < topology_.num_vertices(); ++vertex) {
-    undecided_at_[vertex] = static_cast<int>(std::count_if(
-        topology_.RingBegin(vertex), topology_.RingEnd(vertex),
-        [](int32_t edge) { return edge != UvSeamTopology::kBoundary; }));
+    undecided_at_[vertex] = topology_.InteriorDegree(vertex);
   }
 }
 
 template <class BitIoT>
 void CreaseWalker<BitIoT>::DecideVertex(int32_t vertex) {
+  if (undecided_at_[vertex] == 0) {
+    return;
+  }
   RingSlot slots[kMaxScoredRing];
   const int ring_size = topology_.RingSize(vertex);
   const int32_t *const ring = topology_.RingBegin(vertex);
@@ -239,9 +241,9 @@ void CreaseWalker<BitIoT>::DecideVertex(int32_t vertex) {
   while (undecided_at_[vertex] > 0) {
     const Decision decision = Choose(vertex, slots);
     const Features features = Describe(decision);
-    const int contexts[kNumModels] = {RichContext(features).index(),
-                                      EndsContext(features).index(),
-                                      RingContext(features).index()};
+    const std::array<int, kNumModels> contexts = {
+        RichContext(features).index(), EndsContext(features).index(),
+        RingContext(features).index()};
     const uint32_t probability = model_.Predict(contexts);
     const bool seam = io_->Code(
         probability, truth_ != nullptr && (*truth_)[decision.edge] != 0);
@@ -291,16 +293,21 @@ Decision CreaseWalker<BitIoT>::Choose(int32_t vertex,
                      [this](int32_t edge) { return IsUndecided(edge); }) -
         ring);
   } else {
+    int cuts[kMaxScoredRing];
+    int num_cuts = 0;
+    for (int j = 0; j < size; ++j) {
+      if (slots[j] == kCutSlot) {
+        cuts[num_cuts++] = j;
+      }
+    }
     for (int i = 0; i < size; ++i) {
       if (slots[i] != kOpenSlot) {
         continue;
       }
       int distance = size;  // Larger than any ring distance.
-      for (int j = 0; j < size; ++j) {
-        if (slots[j] == kCutSlot) {
-          const int apart = i > j ? i - j : j - i;
-          distance = std::min(distance, std::min(apart, size - apart));
-        }
+      for (int k = 0; k < num_cuts; ++k) {
+        const int apart = i > cuts[k] ? i - cuts[k] : cuts[k] - i;
+        distance = std::min(distance, std::min(apart, size - apart));
       }
       if (distance > best_distance) {
         best = i;

@@ -14,6 +14,8 @@
 //
 #include "draco_ext/uv_seam_topology.h"
 
+#include <cstddef>
+
 namespace draco {
 
 bool UvSeamTopology::Init(const std::vector<int32_t> &opposite) {
@@ -55,15 +57,6 @@ void UvSeamTopology::NumberEdges() {
       edge_corner_.push_back(corner);
     }
   }
-  wings_.resize(edge_corner_.size());
-  for (int32_t edge = 0; edge < num_edges(); ++edge) {
-    const int32_t sides[2] = {edge_corner_[edge],
-                              opposite_[edge_corner_[edge]]};
-    for (int side = 0; side < 2; ++side) {
-      wings_[edge][2 * side] = corner_edge_[Next(sides[side])];
-      wings_[edge][2 * side + 1] = corner_edge_[Previous(sides[side])];
-    }
-  }
 }
 
 int32_t UvSeamTopology::SwingLeft(int32_t corner) const {
@@ -81,6 +74,12 @@ void UvSeamTopology::BuildFans() {
   ring_begin_.assign(1, 0);
   ring_.clear();
   is_open_.clear();
+  interior_degree_.clear();
+  // One entry per corner, plus one per open fan.
+  ring_.reserve(opposite_.size() + opposite_.size() / 4);
+  ring_begin_.reserve(opposite_.size() / 4);
+  is_open_.reserve(opposite_.size() / 4);
+  interior_degree_.reserve(opposite_.size() / 4);
   for (int32_t corner = 0; corner < num_corners(); ++corner) {
     if (corner_vertex_[corner] < 0) {
       AddFan(corner);
@@ -89,32 +88,41 @@ void UvSeamTopology::BuildFans() {
 }
 
 void UvSeamTopology::AddFan(int32_t corner) {
-  // With a symmetric pairing, swinging is a bijection between corners of a
-  // fan, so walking left either returns to |corner| or stops at a boundary.
-  int32_t first = corner;
-  bool open = false;
-  for (int32_t left = SwingLeft(corner); left != corner;
-       left = SwingLeft(left)) {
-    if (left == kBoundary) {
-      open = true;
-      break;
-    }
-    first = left;
-  }
-  if (!open) {
-    first = corner;
-  }
   const int32_t vertex = static_cast<int32_t>(is_open_.size());
-  is_open_.push_back(open);
-  if (open) {
-    ring_.push_back(corner_edge_[Next(first)]);  // The boundary edge.
-  }
-  int32_t current = first;
+  const size_t ring_start = ring_.size();
+  // With a symmetric pairing, swinging is a bijection between the corners of
+  // a fan: walking right either returns to |corner| (a closed fan) or stops
+  // at a boundary, and then the fan starts further left.
+  int32_t current = corner;
   do {
-    corner_vertex_[current] = vertex;
     ring_.push_back(corner_edge_[Previous(current)]);
     current = SwingRight(current);
+  } while (current != kBoundary && current != corner);
+  const bool open = current == kBoundary;
+  int32_t first = corner;
+  if (open) {
+    for (int32_t left = SwingLeft(corner); left != kBoundary;
+         left = SwingLeft(left)) {
+      first = left;
+    }
+    ring_.resize(ring_start);
+    ring_.push_back(corner_edge_[Next(first)]);  // The boundary edge.
+    for (current = first; current != kBoundary; current = SwingRight(current)) {
+      ring_.push_back(corner_edge_[Previous(current)]);
+    }
+  }
+  int interior = 0;
+  for (size_t i = ring_start; i < ring_.size(); ++i) {
+    interior += ring_[i] != kBoundary;
+  }
+  // Corners of the fan, in ring order.
+  current = first;
+  do {
+    corner_vertex_[current] = vertex;
+    current = SwingRight(current);
   } while (current != kBoundary && current != first);
+  is_open_.push_back(open);
+  interior_degree_.push_back(interior);
   ring_begin_.push_back(static_cast<int32_t>(ring_.size()));
 }
 

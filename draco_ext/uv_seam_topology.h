@@ -59,8 +59,11 @@ class UvSeamTopology {
   }
   // The four other edges of the two faces of |edge| (kBoundary entries for
   // boundary edges).
-  const std::array<int32_t, 4> &Wings(int32_t edge) const {
-    return wings_[edge];
+  std::array<int32_t, 4> Wings(int32_t edge) const {
+    const int32_t corner = edge_corner_[edge];
+    const int32_t other = opposite_[corner];
+    return {corner_edge_[Next(corner)], corner_edge_[Previous(corner)],
+            corner_edge_[Next(other)], corner_edge_[Previous(other)]};
   }
 
   // Ring of |vertex|: edges from RingBegin() to RingEnd().
@@ -73,8 +76,12 @@ class UvSeamTopology {
   int RingSize(int32_t vertex) const {
     return ring_begin_[vertex + 1] - ring_begin_[vertex];
   }
+  // Interior edges in the ring of |vertex|.
+  int InteriorDegree(int32_t vertex) const {
+    return interior_degree_[vertex];
+  }
   // True if the fan of |vertex| is open (the vertex lies on a boundary).
-  bool IsOpen(int32_t vertex) const { return is_open_[vertex]; }
+  bool IsOpen(int32_t vertex) const { return is_open_[vertex] != 0; }
 
   // Interior edges in the order in which Draco's Edgebreaker codes their
   // seam bits (MeshEdgebreakerDecoderImpl::DecodeAttributeConnectivitiesOnFace:
@@ -101,11 +108,11 @@ class UvSeamTopology {
   std::vector<int32_t> opposite_;
   std::vector<int32_t> corner_edge_;
   std::vector<int32_t> edge_corner_;  // The smaller corner of each edge.
-  std::vector<std::array<int32_t, 4>> wings_;
   std::vector<int32_t> corner_vertex_;
   std::vector<int32_t> ring_begin_;
   std::vector<int32_t> ring_;
-  std::vector<bool> is_open_;
+  std::vector<uint8_t> is_open_;
+  std::vector<int32_t> interior_degree_;
 };
 
 }  // namespace draco

@@ -120,19 +120,19 @@ TEST(UvSeamBitModelTest, SquashAndStretchAreMonotoneInverses) {
 }
 
 TEST(UvSeamBitModelTest, LearnsASkewedContextAndKeepsContextsApart) {
-  UvSeamBitModel model({2});
+  UvSeamBitModel<1> model({2});
   for (int i = 0; i < 500; ++i) {
-    const int rare[1] = {0};
+    const std::array<int, 1> rare = {0};
     model.Predict(rare);
     model.Update(i % 50 == 0);
-    const int common[1] = {1};
+    const std::array<int, 1> common = {1};
     model.Predict(common);
     model.Update(i % 2 == 0);
   }
-  const int rare[1] = {0};
+  const std::array<int, 1> rare = {0};
   const uint32_t p_rare = model.Predict(rare);
   model.Update(false);
-  const int common[1] = {1};
+  const std::array<int, 1> common = {1};
   const uint32_t p_common = model.Predict(common);
   model.Update(false);
   EXPECT_LT(p_rare, 4096 / 20);
