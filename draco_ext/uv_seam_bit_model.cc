@@ -36,24 +36,13 @@ std::array<int16_t, 4096> MakeStretchTable() {
   return table;
 }
 
-const std::array<int16_t, 4096> &StretchTable() {
-  static const std::array<int16_t, 4096> table = MakeStretchTable();
-  return table;
-}
-
-// (n1 + 0.3) / (n0 + n1 + 0.6) in 1/4096, within [1, 4095].
-int EstimateFromCounts(const uint16_t n[2]) {
-  const int p = ((10 * n[1] + 3) << 12) / (10 * (n[0] + n[1]) + 6);
-  return std::min(std::max(p, 1), 4095);
-}
-
 std::vector<int16_t> MakeFastTable() {
   std::vector<int16_t> values(kUvSeamFastSide * kUvSeamFastSide);
   for (uint16_t n0 = 0; n0 < kUvSeamFastSide; ++n0) {
     for (uint16_t n1 = 0; n1 < kUvSeamFastSide; ++n1) {
       const uint16_t counts[2] = {n0, n1};
       values[n0 * kUvSeamFastSide + n1] =
-          static_cast<int16_t>(UvSeamStretch(EstimateFromCounts(counts)));
+          static_cast<int16_t>(UvSeamStretch(UvSeamEstimate(counts)));
     }
   }
   return values;
@@ -61,27 +50,14 @@ std::vector<int16_t> MakeFastTable() {
 
 }  // namespace
 
-int UvSeamSquash(int x) {
-  static constexpr int kTable[33] = {
-      1,    2,    3,    6,    10,   16,   27,   45,   73,   120,  194,
-      310,  488,  747,  1101, 1546, 2047, 2549, 2994, 3348, 3607, 3785,
-      3901, 3975, 4022, 4050, 4068, 4079, 4085, 4089, 4092, 4093, 4094};
-  if (x > kMaxStretch) {
-    return 4095;
-  }
-  if (x < -kMaxStretch) {
-    return 1;
-  }
-  const int shifted = x + 2048;  // In [1, 4095]: no shifts of negatives.
-  const int index = shifted >> 7;
-  const int weight = shifted & 127;
-  return (kTable[index] * (128 - weight) + kTable[index + 1] * weight + 64) >>
-         7;
+const int16_t *UvSeamStretchTable() {
+  static const std::array<int16_t, 4096> table = MakeStretchTable();
+  return table.data();
 }
 
 int UvSeamStretch(int probability) {
   DRACO_DCHECK(probability >= 0 && probability < 4096);
-  return StretchTable()[probability];
+  return UvSeamStretchTable()[probability];
 }
 
 constexpr int UvSeamCounts::kLimits[];
@@ -89,10 +65,6 @@ constexpr int UvSeamCounts::kLimits[];
 const int16_t *UvSeamFastStretchTable() {
   static const std::vector<int16_t> table = MakeFastTable();
   return table.data();
-}
-
-int UvSeamSlowStretch(const uint16_t n[2]) {
-  return UvSeamStretch(EstimateFromCounts(n));
 }
 
 }  // namespace draco

@@ -23,7 +23,9 @@
 // across a mesh. A logistic mixer (M. Mahoney, "Adaptive weighing of context
 // models for lossless data compression", 2005; PAQ's integer squash and
 // stretch) combines all estimates with weights trained online by gradient
-// descent on coding cost.
+// descent on coding cost. Models with many contexts keep them in a hashed
+// table of 2^14 cells (128 KB), so memory does not grow with the context
+// space.
 #ifndef DRACO_EXT_UV_SEAM_BIT_MODEL_H_
 #define DRACO_EXT_UV_SEAM_BIT_MODEL_H_
 
@@ -33,13 +35,28 @@
 #include <vector>
 
 #include "draco/core/macros.h"
-#include "draco_ext/uv_fixed_point.h"
 
 namespace draco {
 
 // PAQ's squash: 4096 / (1 + e^-(x / 256)) for |x| < 2048, interpolated from
 // a table, in [1, 4095].
-int UvSeamSquash(int x);
+inline int UvSeamSquash(int x) {
+  static constexpr int kTable[33] = {
+      1,    2,    3,    6,    10,   16,   27,   45,   73,   120,  194,
+      310,  488,  747,  1101, 1546, 2047, 2549, 2994, 3348, 3607, 3785,
+      3901, 3975, 4022, 4050, 4068, 4079, 4085, 4089, 4092, 4093, 4094};
+  if (x > 2047) {
+    return 4095;
+  }
+  if (x < -2047) {
+    return 1;
+  }
+  const int shifted = x + 2048;  // In [1, 4095]: no shifts of negatives.
+  const int index = shifted >> 7;
+  const int weight = shifted & 127;
+  return (kTable[index] * (128 - weight) + kTable[index + 1] * weight + 64) >>
+         7;
+}
 // Inverse of UvSeamSquash() for probabilities in [0, 4095].
 int UvSeamStretch(int probability);
 
@@ -60,12 +77,24 @@ struct UvSeamCounts {
   }
 };
 
-// UvSeamStretch() of the estimate of fast counts n0, n1 at
+// The estimate of counts n0, n1: (n1 + 0.3) / (n0 + n1 + 0.6) in 1/4096,
+// within [1, 4095].
+inline int UvSeamEstimate(const uint16_t n[2]) {
+  const int p = ((10 * n[1] + 3) << 12) / (10 * (n[0] + n[1]) + 6);
+  return std::min(std::max(p, 1), 4095);
+}
+
+// UvSeamStretch() of every probability in [0, 4095].
+const int16_t *UvSeamStretchTable();
+// UvSeamStretch(UvSeamEstimate()) of fast counts n0, n1 at
 // [n0 * kUvSeamFastSide + n1], where counts stay below kUvSeamFastSide.
 constexpr int kUvSeamFastSide = UvSeamCounts::kLimits[0] + 2;
 const int16_t *UvSeamFastStretchTable();
-// UvSeamStretch() of the estimate of slow counts.
-int UvSeamSlowStretch(const uint16_t n[2]);
+
+// Models with more contexts than 2^kUvSeamMaxTableBits use a hashed table of
+// that size (Fibonacci hashing; collisions merge statistics, identically in
+// encoder and decoder).
+constexpr int kUvSeamMaxTableBits = 14;
 
 template <int kNumModels>
 class UvSeamBitModel {
@@ -73,7 +102,10 @@ class UvSeamBitModel {
   // |num_contexts|[i] is the number of contexts of model i.
   explicit UvSeamBitModel(const std::array<int, kNumModels> &num_contexts) {
     for (int model = 0; model < kNumModels; ++model) {
-      tables_[model].resize(num_contexts[model]);
+      const bool hashed = num_contexts[model] > (1 << kUvSeamMaxTableBits);
+      hashed_[model] = hashed;
+      tables_[model].resize(hashed ? 1 << kUvSeamMaxTableBits
+                                   : num_contexts[model]);
     }
     weights_.fill(65536 / kNumInputs);
   }
@@ -83,19 +115,22 @@ class UvSeamBitModel {
   uint32_t Predict(const std::array<int, kNumModels> &contexts) {
     int64_t dot = 0;
     for (int model = 0; model < kNumModels; ++model) {
-      DRACO_DCHECK(contexts[model] >= 0 &&
-                   contexts[model] < static_cast<int>(tables_[model].size()));
-      const UvSeamCounts &counts = tables_[model][contexts[model]];
-      active_[model] = &tables_[model][contexts[model]];
+      const uint32_t context = static_cast<uint32_t>(contexts[model]);
+      const uint32_t slot =
+          hashed_[model] ? (context * 0x9E3779B1u) >> (32 - kUvSeamMaxTableBits)
+                         : context;
+      DRACO_DCHECK(slot < tables_[model].size());
+      UvSeamCounts &counts = tables_[model][slot];
+      active_[model] = &counts;
       int *const inputs = &inputs_[model * UvSeamCounts::kNumRates];
       inputs[0] =
           fast_table_[counts.n[0][0] * kUvSeamFastSide + counts.n[0][1]];
-      inputs[1] = UvSeamSlowStretch(counts.n[1]);
+      inputs[1] = stretch_table_[UvSeamEstimate(counts.n[1])];
     }
     for (int input = 0; input < kNumInputs; ++input) {
       dot += int64_t{weights_[input]} * inputs_[input];
     }
-    const int64_t x = ShiftRightTowardZero(dot, 16);
+    const int64_t x = dot / 65536;  // Rounds toward zero, like the step below.
     probability_ = UvSeamSquash(static_cast<int>(
         std::min<int64_t>(std::max<int64_t>(x, -2048), 2048)));
     return static_cast<uint32_t>(probability_);
@@ -105,8 +140,8 @@ class UvSeamBitModel {
   void Update(bool bit) {
     const int error = (bit ? 4096 : 0) - probability_;
     for (int input = 0; input < kNumInputs; ++input) {
-      const int64_t step = ShiftRightTowardZero(
-          int64_t{inputs_[input]} * error, kLearningShift);
+      const int64_t step =
+          int64_t{inputs_[input]} * error / (int64_t{1} << kLearningShift);
       weights_[input] = static_cast<int32_t>(std::min<int64_t>(
           std::max<int64_t>(weights_[input] + step, -kMaxWeight),
           kMaxWeight));
@@ -122,8 +157,10 @@ class UvSeamBitModel {
   static constexpr int kLearningShift = 10;
   static constexpr int32_t kMaxWeight = 1 << 22;  // 64 in 16.16.
 
+  const int16_t *const stretch_table_ = UvSeamStretchTable();
   const int16_t *const fast_table_ = UvSeamFastStretchTable();
   std::array<std::vector<UvSeamCounts>, kNumModels> tables_;
+  std::array<bool, kNumModels> hashed_;
   std::array<UvSeamCounts *, kNumModels> active_ = {};
   std::array<int, kNumInputs> inputs_ = {};     // Stretched estimates.
   std::array<int32_t, kNumInputs> weights_;     // 16.16 fixed point.

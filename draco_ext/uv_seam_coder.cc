@@ -50,11 +50,67 @@ struct Decision {
   int32_t vertex;
   int32_t other;  // The edge's other vertex.
   int32_t edge;
-  int distance_class;
+  int position = -1;  // In the ring, if it has at most kMaxScoredRing edges.
+  int distance_class = kLongRing;
+  int sector = 0;  // Edges between the nearest cuts around the decided one.
 };
 
-// What a vertex's walk knows about each edge of its ring.
-enum RingSlot : uint8_t { kOpenSlot, kJoinSlot, kCutSlot };
+// The ring of the vertex being decided (at most kMaxScoredRing edges): which
+// edges are undecided, and how far each is from the nearest cut (seam or
+// boundary) in either direction.
+class RingView {
+ public:
+  RingView(int size, const bool *undecided, const bool *cut) : size_(size) {
+    for (int i = 0; i < size; ++i) {
+      open_[i] = undecided[i];
+      left_[i] = right_[i] = size;  // No cut.
+    }
+    for (int i = 0; i < size; ++i) {
+      if (cut[i]) {
+        AddCut(i);
+      }
+    }
+  }
+
+  void Decide(int position, bool seam) {
+    open_[position] = false;
+    if (seam) {
+      AddCut(position);
+    }
+  }
+
+  // The undecided position farthest from the nearest cut (the first one on
+  // ties or without cuts), its distance (size() without cuts) and the
+  // number of positions between the cuts around it.
+  int Farthest(int *distance, int *sector) const {
+    int best = -1;
+    *distance = -1;
+    for (int i = 0; i < size_; ++i) {
+      const int d = std::min(left_[i], right_[i]);
+      if (open_[i] && d > *distance) {
+        best = i;
+        *distance = d;
+      }
+    }
+    *sector = *distance < size_ ? left_[best] + right_[best] - 1 : 0;
+    return best;
+  }
+
+ private:
+  void AddCut(int position) {
+    for (int i = 0; i < size_; ++i) {
+      const int to_left = i >= position ? i - position : i - position + size_;
+      const int to_right = position >= i ? position - i : position - i + size_;
+      left_[i] = std::min(left_[i], to_left);
+      right_[i] = std::min(right_[i], to_right);
+    }
+  }
+
+  int size_;
+  bool open_[kMaxScoredRing];
+  int left_[kMaxScoredRing];   // Steps to the nearest cut going left.
+  int right_[kMaxScoredRing];  // Same, going right.
+};
 
 // Builds a context index from features with known ranges.
 class MixedRadix {
@@ -87,6 +143,7 @@ struct Features {
   int wing_joins = 0;       // Decided non-seams among the wings, up to 3.
   int ring_size = 0;        // Up to 9.
   int earlier_seam = 0;     // An earlier attribute has a seam here.
+  int sector = 0;
 };
 
 // Model 0: everything; model 1: the seam counts at both ends; model 2: the
@@ -105,7 +162,9 @@ MixedRadix RichContext(const Features &f) {
       .Add(f.wing_cuts, 3)
       .Add(f.wing_joins, 4)
       .Add(f.undecided_there, 3)
-      .Add(f.earlier_seam, 2);
+      .Add(f.earlier_seam, 2)
+      .Add(std::min(f.ring_size, 8) / 2, 5)
+      .Add(std::min(f.sector, 5), 6);
 }
 
 MixedRadix EndsContext(const Features &f) {
@@ -122,6 +181,7 @@ MixedRadix RingContext(const Features &f) {
       .Add(f.distance_class, kNumDistanceClasses)
       .Add(f.undecided_here, 4)
       .Add(f.ring_size, 10)
+      .Add(f.sector, 8)
       .Add(f.earlier_seam, 2);
 }
 
@@ -173,9 +233,11 @@ class CreaseWalker {
  private:
   void Reset();
   void DecideVertex(int32_t vertex);
-  // Fills |slots| for a ring of at most kMaxScoredRing edges.
-  void ReadRing(int32_t vertex, RingSlot *slots) const;
-  Decision Choose(int32_t vertex, const RingSlot *slots) const;
+  // The view of a ring of at most kMaxScoredRing edges.
+  RingView ReadRing(int32_t vertex) const;
+  // Picks the next edge of |vertex| to decide: the farthest of |view| if
+  // the ring is short enough, the first undecided one otherwise.
+  Decision Choose(int32_t vertex, const RingView &view) const;
   Features Describe(const Decision &decision) const;
   bool IsAnchor(int32_t edge) const {
     return edge == UvSeamTopology::kBoundary || (*state_)[edge] == 1;
@@ -232,14 +294,9 @@ void CreaseWalker<BitIoT>::DecideVertex(int32_t vertex) {
   if (undecided_at_[vertex] == 0) {
     return;
   }
-  RingSlot slots[kMaxScoredRing];
-  const int ring_size = topology_.RingSize(vertex);
-  const int32_t *const ring = topology_.RingBegin(vertex);
-  if (ring_size <= kMaxScoredRing) {
-    ReadRing(vertex, slots);
-  }
+  RingView view = ReadRing(vertex);
   while (undecided_at_[vertex] > 0) {
-    const Decision decision = Choose(vertex, slots);
+    const Decision decision = Choose(vertex, view);
     const Features features = Describe(decision);
     const std::array<int, kNumModels> contexts = {
         RichContext(features).index(), EndsContext(features).index(),
@@ -249,12 +306,8 @@ void CreaseWalker<BitIoT>::DecideVertex(int32_t vertex) {
         probability, truth_ != nullptr && (*truth_)[decision.edge] != 0);
     model_.Update(seam);
     (*state_)[decision.edge] = seam;
-    if (ring_size <= kMaxScoredRing) {
-      for (int i = 0; i < ring_size; ++i) {
-        if (ring[i] == decision.edge) {
-          slots[i] = seam ? kCutSlot : kJoinSlot;
-        }
-      }
+    if (decision.position >= 0) {
+      view.Decide(decision.position, seam);
     }
     --undecided_at_[decision.vertex];
     --undecided_at_[decision.other];
@@ -269,66 +322,44 @@ void CreaseWalker<BitIoT>::DecideVertex(int32_t vertex) {
 }
 
 template <class BitIoT>
-void CreaseWalker<BitIoT>::ReadRing(int32_t vertex, RingSlot *slots) const {
+RingView CreaseWalker<BitIoT>::ReadRing(int32_t vertex) const {
+  bool undecided[kMaxScoredRing];
+  bool cut[kMaxScoredRing];
+  const int size = std::min(topology_.RingSize(vertex), kMaxScoredRing);
   const int32_t *const ring = topology_.RingBegin(vertex);
-  for (int i = 0; i < topology_.RingSize(vertex); ++i) {
-    slots[i] = IsUndecided(ring[i]) ? kOpenSlot
-               : IsAnchor(ring[i])  ? kCutSlot
-                                    : kJoinSlot;
+  for (int i = 0; i < size; ++i) {
+    undecided[i] = IsUndecided(ring[i]);
+    cut[i] = IsAnchor(ring[i]);
   }
+  return RingView(size, undecided, cut);
 }
 
-// Picks the undecided edge of |vertex| farthest in the ring from the known
-// seams and boundaries there (the first one on ties, or if none is known).
 template <class BitIoT>
 Decision CreaseWalker<BitIoT>::Choose(int32_t vertex,
-                                      const RingSlot *slots) const {
+                                      const RingView &view) const {
   const int32_t *const ring = topology_.RingBegin(vertex);
   const int size = topology_.RingSize(vertex);
-  int best = -1;
-  int best_distance = -1;
+  Decision decision;
+  decision.vertex = vertex;
+  int best;
   if (size > kMaxScoredRing) {
     best = static_cast<int>(
         std::find_if(ring, ring + size,
                      [this](int32_t edge) { return IsUndecided(edge); }) -
         ring);
+    decision.position = -1;
+    decision.distance_class = kLongRing;
   } else {
-    int cuts[kMaxScoredRing];
-    int num_cuts = 0;
-    for (int j = 0; j < size; ++j) {
-      if (slots[j] == kCutSlot) {
-        cuts[num_cuts++] = j;
-      }
-    }
-    for (int i = 0; i < size; ++i) {
-      if (slots[i] != kOpenSlot) {
-        continue;
-      }
-      int distance = size;  // Larger than any ring distance.
-      for (int k = 0; k < num_cuts; ++k) {
-        const int apart = i > cuts[k] ? i - cuts[k] : cuts[k] - i;
-        distance = std::min(distance, std::min(apart, size - apart));
-      }
-      if (distance > best_distance) {
-        best = i;
-        best_distance = distance;
-      }
-    }
+    int distance;
+    best = view.Farthest(&distance, &decision.sector);
+    decision.position = best;
+    decision.distance_class =
+        distance == size ? kNoAnchor : 1 + std::min(2, 6 * distance / size);
+    decision.sector = std::min(decision.sector, 7);
   }
   DRACO_DCHECK(best >= 0 && best < size);
-  Decision decision;
-  decision.vertex = vertex;
   decision.edge = ring[best];
-  const int32_t end0 = topology_.EdgeVertex(decision.edge, 0);
-  decision.other =
-      end0 == vertex ? topology_.EdgeVertex(decision.edge, 1) : end0;
-  if (size > kMaxScoredRing) {
-    decision.distance_class = kLongRing;
-  } else if (best_distance == size) {
-    decision.distance_class = kNoAnchor;
-  } else {
-    decision.distance_class = 1 + std::min(2, 6 * best_distance / size);
-  }
+  decision.other = topology_.RingNeighbors(vertex)[best];
   return decision;
 }
 
@@ -356,6 +387,7 @@ Features CreaseWalker<BitIoT>::Describe(const Decision &decision) const {
   f.wing_joins = std::min(joins, 3);
   f.ring_size = std::min(topology_.RingSize(decision.vertex), 9);
   f.earlier_seam = (*earlier_)[decision.edge];
+  f.sector = decision.sector;
   return f;
 }
 

@@ -25,7 +25,7 @@ bool UvSeamTopology::Init(const std::vector<int32_t> &opposite) {
   }
   NumberEdges();
   BuildFans();
-  return true;
+  return ConnectVertices();
 }
 
 bool UvSeamTopology::IsValidPairing() const {
@@ -56,6 +56,13 @@ void UvSeamTopology::NumberEdges() {
           static_cast<int32_t>(edge_corner_.size());
       edge_corner_.push_back(corner);
     }
+  }
+  wings_.resize(edge_corner_.size());
+  for (int32_t edge = 0; edge < num_edges(); ++edge) {
+    const int32_t corner = edge_corner_[edge];
+    const int32_t other = opposite_[corner];
+    wings_[edge] = {corner_edge_[Next(corner)], corner_edge_[Previous(corner)],
+                    corner_edge_[Next(other)], corner_edge_[Previous(other)]};
   }
 }
 
@@ -109,7 +116,7 @@ void UvSeamTopology::AddFan(int32_t corner) {
     ring_.push_back(corner_edge_[Next(first)]);  // The boundary edge.
     for (current = first; current != kBoundary; current = SwingRight(current)) {
       ring_.push_back(corner_edge_[Previous(current)]);
-    }
+      }
   }
   int interior = 0;
   for (size_t i = ring_start; i < ring_.size(); ++i) {
@@ -124,6 +131,31 @@ void UvSeamTopology::AddFan(int32_t corner) {
   is_open_.push_back(open);
   interior_degree_.push_back(interior);
   ring_begin_.push_back(static_cast<int32_t>(ring_.size()));
+}
+
+bool UvSeamTopology::ConnectVertices() {
+  edge_vertices_.resize(2 * edge_corner_.size());
+  for (int32_t edge = 0; edge < num_edges(); ++edge) {
+    const int32_t corner = edge_corner_[edge];
+    edge_vertices_[2 * edge] = corner_vertex_[Next(corner)];
+    edge_vertices_[2 * edge + 1] = corner_vertex_[Previous(corner)];
+    if (edge_vertices_[2 * edge] == edge_vertices_[2 * edge + 1]) {
+      return false;  // Only corrupt connectivity joins a vertex to itself.
+    }
+  }
+  ring_neighbor_.resize(ring_.size());
+  for (int32_t vertex = 0; vertex < num_vertices(); ++vertex) {
+    for (int32_t i = ring_begin_[vertex]; i < ring_begin_[vertex + 1]; ++i) {
+      const int32_t edge = ring_[i];
+      if (edge == kBoundary) {
+        ring_neighbor_[i] = kBoundary;
+      } else {
+        const int32_t end0 = edge_vertices_[2 * edge];
+        ring_neighbor_[i] = end0 == vertex ? edge_vertices_[2 * edge + 1] : end0;
+      }
+    }
+  }
+  return true;
 }
 
 std::vector<int32_t> UvSeamTopology::DracoSeamOrder() const {

@@ -41,7 +41,8 @@ class UvSeamTopology {
 
   // Builds the topology from the opposite corner of every corner
   // (kBoundary if none). Fails unless |opposite| pairs corners of different
-  // faces symmetrically.
+  // faces symmetrically and every edge joins two different vertices (true
+  // for every Draco corner table without degenerate faces).
   bool Init(const std::vector<int32_t> &opposite);
 
   int num_corners() const { return static_cast<int>(opposite_.size()); }
@@ -54,16 +55,12 @@ class UvSeamTopology {
   int32_t EdgeCorner(int32_t edge) const { return edge_corner_[edge]; }
   // The two vertices of |edge|.
   int32_t EdgeVertex(int32_t edge, int end) const {
-    const int32_t corner = edge_corner_[edge];
-    return corner_vertex_[end == 0 ? Next(corner) : Previous(corner)];
+    return edge_vertices_[2 * edge + end];
   }
   // The four other edges of the two faces of |edge| (kBoundary entries for
   // boundary edges).
-  std::array<int32_t, 4> Wings(int32_t edge) const {
-    const int32_t corner = edge_corner_[edge];
-    const int32_t other = opposite_[corner];
-    return {corner_edge_[Next(corner)], corner_edge_[Previous(corner)],
-            corner_edge_[Next(other)], corner_edge_[Previous(other)]};
+  const std::array<int32_t, 4> &Wings(int32_t edge) const {
+    return wings_[edge];
   }
 
   // Ring of |vertex|: edges from RingBegin() to RingEnd().
@@ -75,6 +72,11 @@ class UvSeamTopology {
   }
   int RingSize(int32_t vertex) const {
     return ring_begin_[vertex + 1] - ring_begin_[vertex];
+  }
+  // For each ring entry, the other vertex of the edge (kBoundary for
+  // boundary edges).
+  const int32_t *RingNeighbors(int32_t vertex) const {
+    return ring_neighbor_.data() + ring_begin_[vertex];
   }
   // Interior edges in the ring of |vertex|.
   int InteriorDegree(int32_t vertex) const {
@@ -100,6 +102,9 @@ class UvSeamTopology {
   bool IsValidPairing() const;
   void NumberEdges();
   void BuildFans();
+  // Fills the vertex arrays once every corner has its vertex; false if an
+  // edge joins a vertex to itself.
+  bool ConnectVertices();
   // Adds the fan of |corner| as a new vertex.
   void AddFan(int32_t corner);
   int32_t SwingLeft(int32_t corner) const;
@@ -108,9 +113,12 @@ class UvSeamTopology {
   std::vector<int32_t> opposite_;
   std::vector<int32_t> corner_edge_;
   std::vector<int32_t> edge_corner_;  // The smaller corner of each edge.
+  std::vector<int32_t> edge_vertices_;  // Two per edge.
+  std::vector<std::array<int32_t, 4>> wings_;
   std::vector<int32_t> corner_vertex_;
   std::vector<int32_t> ring_begin_;
   std::vector<int32_t> ring_;
+  std::vector<int32_t> ring_neighbor_;
   std::vector<uint8_t> is_open_;
   std::vector<int32_t> interior_degree_;
 };
