@@ -17,6 +17,7 @@
 #include <limits>
 
 #include "draco/core/encoder_buffer.h"
+#include "prediction_schemes/uv_stencil_geometry.h"
 
 namespace draco {
 
@@ -28,9 +29,9 @@ constexpr char kAutoName[] = "auto";
 // connectivity that mesh prediction schemes need.
 constexpr int kSequentialEncodingSpeed = 10;
 
-bool NeedsQuantizedPositions(PredictionSchemeMethod method) {
-  return method == MESH_PREDICTION_TEX_COORDS_PORTABLE ||
-         method == MESH_PREDICTION_TEX_COORDS_WEIGHTED;
+bool IsWeighted(PredictionSchemeMethod method) {
+  return method == MESH_PREDICTION_TEX_COORDS_WEIGHTED ||
+         method == MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI;
 }
 
 std::vector<int> TexCoordAttributeIds(const Mesh &mesh) {
@@ -60,10 +61,18 @@ Status CheckCommonSettings(const ExpertEncoder &encoder, int att_id) {
   return OkStatus();
 }
 
-// Checks what |method| needs beyond CheckCommonSettings().
+// Checks what |method| needs beyond CheckCommonSettings() to code the
+// TEX_COORD attribute |att_id|.
 Status CheckSettingsFor(PredictionSchemeMethod method, const Mesh &mesh,
-                        const ExpertEncoder &encoder) {
-  if (NeedsQuantizedPositions(method)) {
+                        const ExpertEncoder &encoder, int att_id) {
+  if (IsWeighted(method) &&
+      QuantizationBits(encoder, att_id) > kUvStencilMaxUvQuantizationBits) {
+    return Status(Status::DRACO_ERROR,
+                  "-uv_pred " + UvPredictionNameOf(method) +
+                      " supports -qt up to " +
+                      std::to_string(kUvStencilMaxUvQuantizationBits) + ".");
+  }
+  if (UvPredictionNeedsQuantizedPositions(method)) {
     const int pos_id = mesh.GetNamedAttributeId(GeometryAttribute::POSITION);
     if (pos_id < 0) {
       return Status(Status::DRACO_ERROR,
@@ -94,12 +103,14 @@ std::string AttributeLabel(const Mesh &mesh, int att_id) {
          std::to_string(att_id) + ")";
 }
 
-// Candidates of -uv_pred auto; stock Draco's choice comes first so that it
-// wins ties.
+// Candidates of -uv_pred auto: every scheme that decodes about as fast as
+// stock Draco (so not weighted_multi). Stock Draco's choice comes first so
+// that it wins ties.
 std::vector<PredictionSchemeMethod> AutoCandidates() {
   std::vector<PredictionSchemeMethod> candidates;
   for (const UvPredictionName &entry : UvPredictionNames()) {
-    if (std::string(entry.name) != kAutoName) {
+    if (std::string(entry.name) != kAutoName &&
+        entry.method != MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI) {
       candidates.push_back(entry.method);
     }
   }
@@ -114,7 +125,7 @@ StatusOr<std::string> ChooseSmallestFor(const Mesh &mesh, int att_id,
   size_t best_size = std::numeric_limits<size_t>::max();
   size_t stock_size = 0;
   for (const PredictionSchemeMethod method : AutoCandidates()) {
-    if (!CheckSettingsFor(method, mesh, *encoder).ok()) {
+    if (!CheckSettingsFor(method, mesh, *encoder, att_id).ok()) {
       continue;
     }
     DRACO_RETURN_IF_ERROR(encoder->SetAttributePredictionScheme(att_id, method));
@@ -148,8 +159,10 @@ const std::vector<UvPredictionName> &UvPredictionNames() {
        "Draco's TEX_COORDS_PORTABLE prediction"},
       {"weighted", MESH_PREDICTION_TEX_COORDS_WEIGHTED,
        "mesh-guided weighted parallelogram (draco-uv)"},
+      {"weighted_multi", MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI,
+       "weighted, all stencils: smaller, slower to decode"},
       {kAutoName, PREDICTION_UNDEFINED,
-       "smallest of the above, per attribute"},
+       "smallest of the above but weighted_multi"},
   };
   return names;
 }
@@ -190,6 +203,17 @@ std::string UvPredictionNameOf(PredictionSchemeMethod method) {
   return std::to_string(static_cast<int>(method));
 }
 
+bool UvPredictionNeedsQuantizedPositions(PredictionSchemeMethod method) {
+  return method == MESH_PREDICTION_TEX_COORDS_PORTABLE || IsWeighted(method);
+}
+
+bool IsDracoUvPredictionMethod(PredictionSchemeMethod method) {
+  // MESH_PREDICTION_GEOMETRIC_NORMAL is the last id of stock Draco 1.5.5 to
+  // 1.5.7; draco-uv's ids follow it (patches/0001).
+  return method > MESH_PREDICTION_GEOMETRIC_NORMAL &&
+         method < NUM_PREDICTION_SCHEMES;
+}
+
 StatusOr<std::string> ConfigureUvPrediction(const std::string &name,
                                             const Mesh *mesh,
                                             ExpertEncoder *encoder) {
@@ -214,7 +238,7 @@ StatusOr<std::string> ConfigureUvPrediction(const std::string &name,
       summary += line;
       continue;
     }
-    DRACO_RETURN_IF_ERROR(CheckSettingsFor(method, *mesh, *encoder));
+    DRACO_RETURN_IF_ERROR(CheckSettingsFor(method, *mesh, *encoder, att_id));
     DRACO_RETURN_IF_ERROR(encoder->SetAttributePredictionScheme(att_id, method));
     summary += "UV prediction: " + AttributeLabel(*mesh, att_id) + " -> " +
                name + "\n";
