@@ -60,8 +60,7 @@ class MeshEdgebreakerTraversalUvSeamEncoder : public TraversalEncoderT {
       DRACO_DCHECK(false);
       bytes.assign(1, 0);
     }
-    EncodeVarint(static_cast<uint32_t>(bytes.size()),
-                 this->GetOutputBuffer());
+    EncodeVarint(static_cast<uint32_t>(bytes.size()), this->GetOutputBuffer());
     this->GetOutputBuffer()->Encode(bytes.data(), bytes.size());
   }
 

@@ -17,6 +17,7 @@
 #ifdef DRACO_TRANSCODER_SUPPORTED
 #include "draco/compression/draco_compression_options.h"
 #include "draco_ext/uv_prediction_options.h"
+#include "draco_ext/uv_seam_options.h"
 
 namespace draco {
 
@@ -46,8 +47,11 @@ Status ConfigureUvCompressionForGltf(
   // The per-attribute summary is for command-line tools; a library stays
   // quiet.
   DRACO_RETURN_IF_ERROR(
+      ConfigureUvSeams(options.seams, &mesh, &encoder).status());
+  DRACO_RETURN_IF_ERROR(
       ConfigureUvPrediction(options.prediction, &mesh, &encoder).status());
-  if (UsesDracoUvScheme(mesh, encoder)) {
+  if (UsesDracoUvScheme(mesh, encoder) ||
+      GetUvSeamCoding(encoder.options()) != UvSeamCoding::kDraco) {
     extensions_used->insert(kUvGltfExtension);
     extensions_required->insert(kUvGltfExtension);
   }

@@ -37,8 +37,9 @@ namespace draco {
 // GltfAsset::CompressMeshWithDraco() (patches/0015) with quantization set
 // and V already flipped to glTF's convention (the coders infer UV
 // orientation from the data, so the mirror costs nothing). When a TEX_COORD
-// attribute ends up with a draco-uv scheme, adds kUvGltfExtension to
-// |extensions_used| and |extensions_required|. Stock options change nothing.
+// attribute ends up with a draco-uv scheme or the seams with draco-uv's
+// coding (-uv_seams context), adds kUvGltfExtension to |extensions_used|
+// and |extensions_required|. Stock options change nothing.
 //
 // Draco 1.5.5 holds the encoder by value and 1.5.7 and newer in a
 // unique_ptr; one overload each keeps the hook's text the same in both.

@@ -60,8 +60,6 @@ int UvSeamStretch(int probability) {
   return UvSeamStretchTable()[probability];
 }
 
-constexpr int UvSeamCounts::kLimits[];
-
 const int16_t *UvSeamFastStretchTable() {
   static const std::vector<int16_t> table = MakeFastTable();
   return table.data();

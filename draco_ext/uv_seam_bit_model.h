@@ -131,8 +131,8 @@ class UvSeamBitModel {
       dot += int64_t{weights_[input]} * inputs_[input];
     }
     const int64_t x = dot / 65536;  // Rounds toward zero, like the step below.
-    probability_ = UvSeamSquash(static_cast<int>(
-        std::min<int64_t>(std::max<int64_t>(x, -2048), 2048)));
+    probability_ = UvSeamSquash(
+        static_cast<int>(std::min<int64_t>(std::max<int64_t>(x, -2048), 2048)));
     return static_cast<uint32_t>(probability_);
   }
 
@@ -143,8 +143,7 @@ class UvSeamBitModel {
       const int64_t step =
           int64_t{inputs_[input]} * error / (int64_t{1} << kLearningShift);
       weights_[input] = static_cast<int32_t>(std::min<int64_t>(
-          std::max<int64_t>(weights_[input] + step, -kMaxWeight),
-          kMaxWeight));
+          std::max<int64_t>(weights_[input] + step, -kMaxWeight), kMaxWeight));
     }
     for (UvSeamCounts *const counts : active_) {
       counts->Add(bit);
@@ -162,9 +161,9 @@ class UvSeamBitModel {
   std::array<std::vector<UvSeamCounts>, kNumModels> tables_;
   std::array<bool, kNumModels> hashed_;
   std::array<UvSeamCounts *, kNumModels> active_ = {};
-  std::array<int, kNumInputs> inputs_ = {};     // Stretched estimates.
-  std::array<int32_t, kNumInputs> weights_;     // 16.16 fixed point.
-  int probability_ = 2048;                      // Last prediction.
+  std::array<int, kNumInputs> inputs_ = {};  // Stretched estimates.
+  std::array<int32_t, kNumInputs> weights_;  // 16.16 fixed point.
+  int probability_ = 2048;                   // Last prediction.
 };
 
 }  // namespace draco

@@ -243,8 +243,7 @@ class CreaseWalker {
     return edge == UvSeamTopology::kBoundary || (*state_)[edge] == 1;
   }
   bool IsUndecided(int32_t edge) const {
-    return edge != UvSeamTopology::kBoundary &&
-           (*state_)[edge] == kUndecided;
+    return edge != UvSeamTopology::kBoundary && (*state_)[edge] == kUndecided;
   }
 
   const UvSeamTopology &topology_;

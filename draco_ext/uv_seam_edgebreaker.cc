@@ -76,8 +76,9 @@ std::vector<int32_t> OppositesOf(const CornerTable &table) {
   std::vector<int32_t> opposite(table.num_corners());
   for (CornerIndex c(0); c < table.num_corners(); ++c) {
     const CornerIndex other = table.Opposite(c);
-    opposite[c.value()] =
-        other == kInvalidCornerIndex ? UvSeamTopology::kBoundary : other.value();
+    opposite[c.value()] = other == kInvalidCornerIndex
+                              ? UvSeamTopology::kBoundary
+                              : other.value();
   }
   return opposite;
 }

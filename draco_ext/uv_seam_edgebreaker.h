@@ -42,8 +42,7 @@ bool IsUvSeamEdgebreakerMethod(int method);
 
 // The Edgebreaker method to write: |stock_method| (standard or valence) or
 // its context-seams variant when |options| select -uv_seams context.
-int UvSeamEdgebreakerMethodFor(const EncoderOptions &options,
-                               int stock_method);
+int UvSeamEdgebreakerMethodFor(const EncoderOptions &options, int stock_method);
 
 // The implementations of the two methods; null for other ids.
 std::unique_ptr<MeshEdgebreakerEncoderImplInterface>

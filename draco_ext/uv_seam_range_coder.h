@@ -55,9 +55,9 @@ class UvSeamRangeEncoder {
 
   uint64_t low_ = 0;  // 32 bits plus a carry bit.
   uint32_t range_ = 0xFFFFFFFFu;
-  uint8_t cache_ = 0;          // Last byte not yet known to be final.
-  uint64_t cache_size_ = 1;    // |cache_| plus pending 0xFF bytes.
-  bool first_byte_ = true;     // The first byte is always 0 and not stored.
+  uint8_t cache_ = 0;        // Last byte not yet known to be final.
+  uint64_t cache_size_ = 1;  // |cache_| plus pending 0xFF bytes.
+  bool first_byte_ = true;   // The first byte is always 0 and not stored.
   std::vector<uint8_t> bytes_;
 };
 

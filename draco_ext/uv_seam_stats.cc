@@ -138,8 +138,8 @@ StatusOr<UvSeamProblem> BuildUvSeamProblem(const Mesh &mesh,
     const MeshAttributeCornerTable *const att_table =
         decoder.GetAttributeCornerTable(decoded_id);
     UvSeamFlags flags(problem.topology.num_edges(), 0);
-    for (int32_t e = 0; att_table != nullptr && e < problem.topology.num_edges();
-         ++e) {
+    for (int32_t e = 0;
+         att_table != nullptr && e < problem.topology.num_edges(); ++e) {
       flags[e] = att_table->IsCornerOppositeToSeamEdge(
           CornerIndex(problem.topology.EdgeCorner(e)));
     }
@@ -188,8 +188,7 @@ int64_t ContextSeamStreamBytes(const UvSeamProblem &problem) {
   return FramedSize(EncodeUvSeams(problem.topology, problem.seams).size());
 }
 
-StatusOr<UvSeamStats> MeasureUvSeams(const std::string &name,
-                                     const Mesh &mesh,
+StatusOr<UvSeamStats> MeasureUvSeams(const std::string &name, const Mesh &mesh,
                                      const UvEncodeSettings &settings) {
   DRACO_ASSIGN_OR_RETURN(const UvSeamProblem problem,
                          BuildUvSeamProblem(mesh, settings));
@@ -199,7 +198,13 @@ StatusOr<UvSeamStats> MeasureUvSeams(const std::string &name,
   stats.vertices = problem.topology.num_vertices();
   stats.interior_edges = problem.topology.num_edges();
   for (const UvSeamFlags &seams : problem.seams) {
-    stats.seam_edges += std::count(seams.begin(), seams.end(), 1);
+    const int64_t seam_edges = std::count(seams.begin(), seams.end(), 1);
+    stats.seam_edges += seam_edges;
+    if (stats.interior_edges > 0) {
+      stats.per_edge_entropy_bytes +=
+          stats.interior_edges / 8.0 *
+          BinaryEntropy(static_cast<double>(seam_edges) / stats.interior_edges);
+    }
   }
   stats.per_edge_bytes = PerEdgeSeamBytes(problem);
   stats.per_vertex_bytes = PerVertexSeamBytes(problem);
@@ -221,10 +226,9 @@ StatusOr<UvSeamStats> MeasureUvSeams(const std::string &name,
   EncoderBuffer stock_file, context_file;
   DRACO_RETURN_IF_ERROR(EncodeMeshWithSettings(mesh, stock, &stock_file));
   DRACO_RETURN_IF_ERROR(EncodeMeshWithSettings(mesh, context, &context_file));
-  stats.sizes_match_files =
-      static_cast<int64_t>(context_file.size()) -
-          static_cast<int64_t>(stock_file.size()) ==
-      stats.context_bytes - stats.stock_bytes;
+  stats.sizes_match_files = static_cast<int64_t>(context_file.size()) -
+                                static_cast<int64_t>(stock_file.size()) ==
+                            stats.context_bytes - stats.stock_bytes;
   return stats;
 }
 

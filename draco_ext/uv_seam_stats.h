@@ -16,8 +16,8 @@
 // measured instead of modelled numbers: what texture connectivity costs per
 // mesh vertex when coded as
 //
-//  * per-edge bits: the paper's proposal, one bit per interior edge,
-//    arithmetic coded with one adaptive probability;
+//  * per-edge bits: the paper's proposal, one bit per interior edge, at
+//    their entropy and arithmetic coded with one adaptive probability;
 //  * per-vertex flags: Taubin et al. 1998 as improved by Isenburg &
 //    Snoeyink 2000, one adaptive flag per vertex that may have crease edges,
 //    then one adaptive bit per undecided edge of flagged vertices, skipping
@@ -48,10 +48,13 @@ namespace draco {
 
 struct UvSeamStats {
   std::string mesh;
-  int attributes = 0;        // Non-position attributes (seam sets).
-  int64_t vertices = 0;      // Vertices of Draco's position corner table.
+  int attributes = 0;    // Non-position attributes (seam sets).
+  int64_t vertices = 0;  // Vertices of Draco's position corner table.
   int64_t interior_edges = 0;
-  int64_t seam_edges = 0;    // Summed over attributes.
+  int64_t seam_edges = 0;  // Summed over attributes.
+  // Per-edge bits at their empirical entropy (each attribute's seam ratio
+  // known in advance), the bound for any coder with one probability.
+  double per_edge_entropy_bytes = 0;
   int64_t per_edge_bytes = 0;
   int64_t per_vertex_bytes = 0;
   int64_t stock_bytes = 0;    // Draco's streams, all attributes.
@@ -84,8 +87,7 @@ int64_t StockSeamStreamBytes(const UvSeamProblem &problem);
 int64_t ContextSeamStreamBytes(const UvSeamProblem &problem);
 
 // Everything above for one mesh, at |settings| (its uv_seams is ignored).
-StatusOr<UvSeamStats> MeasureUvSeams(const std::string &name,
-                                     const Mesh &mesh,
+StatusOr<UvSeamStats> MeasureUvSeams(const std::string &name, const Mesh &mesh,
                                      const UvEncodeSettings &settings);
 
 }  // namespace draco

@@ -116,7 +116,7 @@ void UvSeamTopology::AddFan(int32_t corner) {
     ring_.push_back(corner_edge_[Next(first)]);  // The boundary edge.
     for (current = first; current != kBoundary; current = SwingRight(current)) {
       ring_.push_back(corner_edge_[Previous(current)]);
-      }
+    }
   }
   int interior = 0;
   for (size_t i = ring_start; i < ring_.size(); ++i) {
@@ -151,7 +151,8 @@ bool UvSeamTopology::ConnectVertices() {
         ring_neighbor_[i] = kBoundary;
       } else {
         const int32_t end0 = edge_vertices_[2 * edge];
-        ring_neighbor_[i] = end0 == vertex ? edge_vertices_[2 * edge + 1] : end0;
+        ring_neighbor_[i] =
+            end0 == vertex ? edge_vertices_[2 * edge + 1] : end0;
       }
     }
   }

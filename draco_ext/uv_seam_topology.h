@@ -79,9 +79,7 @@ class UvSeamTopology {
     return ring_neighbor_.data() + ring_begin_[vertex];
   }
   // Interior edges in the ring of |vertex|.
-  int InteriorDegree(int32_t vertex) const {
-    return interior_degree_[vertex];
-  }
+  int InteriorDegree(int32_t vertex) const { return interior_degree_[vertex]; }
   // True if the fan of |vertex| is open (the vertex lies on a boundary).
   bool IsOpen(int32_t vertex) const { return is_open_[vertex] != 0; }
 
@@ -112,7 +110,7 @@ class UvSeamTopology {
 
   std::vector<int32_t> opposite_;
   std::vector<int32_t> corner_edge_;
-  std::vector<int32_t> edge_corner_;  // The smaller corner of each edge.
+  std::vector<int32_t> edge_corner_;    // The smaller corner of each edge.
   std::vector<int32_t> edge_vertices_;  // Two per edge.
   std::vector<std::array<int32_t, 4>> wings_;
   std::vector<int32_t> corner_vertex_;

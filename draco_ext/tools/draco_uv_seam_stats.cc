@@ -113,16 +113,17 @@ double Bpv(int64_t bytes, int64_t vertices) {
 
 void PrintRow(const draco::UvSeamStats &s) {
   printf(
-      "%-28s %7lld %6lld %6.2f %6.2f %9lld %6.3f %9lld %6.3f %9lld %6.3f "
-      "%9lld %6.3f %6.3f %s\n",
+      "%-28s %7lld %6lld %6.2f %6.2f %6.3f %9lld %6.3f %9lld %6.3f %9lld "
+      "%6.3f %9lld %6.3f %6.3f %s\n",
       s.mesh.c_str(), static_cast<long long>(s.vertices),
       static_cast<long long>(s.seam_edges), s.eq1_bpv, s.eq2_bpv,
-      static_cast<long long>(s.per_edge_bytes), Bpv(s.per_edge_bytes, s.vertices),
+      s.vertices > 0 ? 8.0 * s.per_edge_entropy_bytes / s.vertices : 0.0,
+      static_cast<long long>(s.per_edge_bytes),
+      Bpv(s.per_edge_bytes, s.vertices),
       static_cast<long long>(s.per_vertex_bytes),
       Bpv(s.per_vertex_bytes, s.vertices),
       static_cast<long long>(s.stock_bytes), Bpv(s.stock_bytes, s.vertices),
-      static_cast<long long>(s.context_bytes),
-      Bpv(s.context_bytes, s.vertices),
+      static_cast<long long>(s.context_bytes), Bpv(s.context_bytes, s.vertices),
       s.stock_bytes > 0 ? static_cast<double>(s.context_bytes) / s.stock_bytes
                         : 0.0,
       s.sizes_match_files ? "yes" : "NO");
@@ -149,11 +150,12 @@ int main(int argc, char **argv) {
     }
     fprintf(csv,
             "mesh,attributes,vertices,interior_edges,seam_edges,eq1_bpv,"
-            "eq2_bpv,per_edge_bytes,per_vertex_bytes,stock_bytes,"
+            "eq2_bpv,per_edge_entropy_bytes,per_edge_bytes,per_vertex_bytes,"
+            "stock_bytes,"
             "context_bytes,sizes_match_files\n");
   }
-  printf("%-28s %7s %6s %6s %6s %9s %6s %9s %6s %9s %6s %9s %6s %6s %s\n",
-         "mesh", "V", "seams", "eq1", "eq2", "per-edge", "bpv", "per-vert",
+  printf("%-28s %7s %6s %6s %6s %6s %9s %6s %9s %6s %9s %6s %9s %6s %6s %s\n",
+         "mesh", "V", "seams", "eq1", "eq2", "H", "per-edge", "bpv", "per-vert",
          "bpv", "stock", "bpv", "context", "bpv", "ratio", "exact");
   draco::UvSeamStats total;
   total.mesh = "TOTAL";
@@ -179,17 +181,19 @@ int main(int argc, char **argv) {
     PrintRow(s);
     fflush(stdout);
     if (csv != nullptr) {
-      fprintf(csv, "%s,%d,%lld,%lld,%lld,%.4f,%.4f,%lld,%lld,%lld,%lld,%d\n",
-              s.mesh.c_str(), s.attributes, static_cast<long long>(s.vertices),
-              static_cast<long long>(s.interior_edges),
-              static_cast<long long>(s.seam_edges), s.eq1_bpv, s.eq2_bpv,
-              static_cast<long long>(s.per_edge_bytes),
-              static_cast<long long>(s.per_vertex_bytes),
-              static_cast<long long>(s.stock_bytes),
-              static_cast<long long>(s.context_bytes), s.sizes_match_files);
+      fprintf(
+          csv, "%s,%d,%lld,%lld,%lld,%.4f,%.4f,%.1f,%lld,%lld,%lld,%lld,%d\n",
+          s.mesh.c_str(), s.attributes, static_cast<long long>(s.vertices),
+          static_cast<long long>(s.interior_edges),
+          static_cast<long long>(s.seam_edges), s.eq1_bpv, s.eq2_bpv,
+          s.per_edge_entropy_bytes, static_cast<long long>(s.per_edge_bytes),
+          static_cast<long long>(s.per_vertex_bytes),
+          static_cast<long long>(s.stock_bytes),
+          static_cast<long long>(s.context_bytes), s.sizes_match_files);
     }
     total.vertices += s.vertices;
     total.seam_edges += s.seam_edges;
+    total.per_edge_entropy_bytes += s.per_edge_entropy_bytes;
     total.per_edge_bytes += s.per_edge_bytes;
     total.per_vertex_bytes += s.per_vertex_bytes;
     total.stock_bytes += s.stock_bytes;

@@ -44,9 +44,8 @@ std::unique_ptr<Mesh> ReadDracoTestMesh(const std::string &name) {
 // Every edge once in each of its two vertices' rings, and once in Draco's
 // seam order.
 TEST(UvSeamTopologyTest, ListsEveryEdgeInBothRingsAndOnceInDracoOrder) {
-  for (const std::string name :
-       {"cube_att.obj", "sphere.obj", "bun_zipper.ply", "octagon.obj",
-        "multiple_tetrahedrons.obj"}) {
+  for (const std::string name : {"cube_att.obj", "sphere.obj", "bun_zipper.ply",
+                                 "octagon.obj", "multiple_tetrahedrons.obj"}) {
     const auto mesh = ReadDracoTestMesh(name);
     ASSERT_NE(mesh, nullptr);
     const UvSeamTopology topology = TopologyOf(*mesh);
@@ -133,8 +132,8 @@ TEST(UvSeamCoderTest, RoundTripsTheSeamsOfDracoTestdata) {
 // plausible.
 TEST(UvSeamCoderTest, RoundTripsArbitrarySeamSetsOfSeveralAttributes) {
   std::mt19937 random(7);
-  for (const std::string name : {"cube_att.obj", "sphere.obj",
-                                 "bun_zipper.ply", "octagon.obj"}) {
+  for (const std::string name :
+       {"cube_att.obj", "sphere.obj", "bun_zipper.ply", "octagon.obj"}) {
     const auto mesh = ReadDracoTestMesh(name);
     ASSERT_NE(mesh, nullptr);
     const UvSeamTopology topology = TopologyOf(*mesh);

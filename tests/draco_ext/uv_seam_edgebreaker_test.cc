@@ -21,6 +21,7 @@
 #include "draco/compression/config/compression_shared.h"
 #include "draco/compression/encode.h"
 #include "draco/compression/point_cloud/point_cloud_decoder.h"
+#include "draco_ext/uv_prediction_options.h"
 #include "draco_ext/uv_seam_options.h"
 #include "draco_ext/uv_seam_stats.h"
 #include "gtest/gtest.h"
@@ -52,8 +53,7 @@ void ExpectSameMesh(const Mesh &expected, const Mesh &actual,
   for (FaceIndex f(0); f < expected.num_faces(); ++f) {
     ASSERT_EQ(expected.face(f), actual.face(f)) << label << " face " << f;
   }
-  for (int type = 0; type < GeometryAttribute::NAMED_ATTRIBUTES_COUNT;
-       ++type) {
+  for (int type = 0; type < GeometryAttribute::NAMED_ATTRIBUTES_COUNT; ++type) {
     const auto att_type = static_cast<GeometryAttribute::Type>(type);
     for (int i = 0; i < expected.NumNamedAttributes(att_type); ++i) {
       EXPECT_EQ(CornerValues(expected, att_type, i),
@@ -65,8 +65,9 @@ void ExpectSameMesh(const Mesh &expected, const Mesh &actual,
 
 // Encodes |mesh| with stock and context seams at |settings| and checks that
 // both decode to the same mesh; returns the context-seam file.
-std::vector<char> ExpectContextSeamsDecodeLikeStock(
-    const Mesh &mesh, UvEncodeSettings settings, const std::string &label) {
+std::vector<char> ExpectContextSeamsDecodeLikeStock(const Mesh &mesh,
+                                                    UvEncodeSettings settings,
+                                                    const std::string &label) {
   settings.uv_seams = "";
   const auto stock = EncodeMeshToBytes(mesh, settings);
   settings.uv_seams = "context";
@@ -114,18 +115,35 @@ TEST(UvSeamEdgebreakerTest, DecodesLikeStockOnCorpusWithBothMethods) {
       methods.insert(EdgebreakerMethodOf(file));
     }
   }
-  EXPECT_EQ(methods, std::set<int>({MESH_EDGEBREAKER_STANDARD_CONTEXT_SEAMS_ENCODING,
-                                    MESH_EDGEBREAKER_VALENCE_CONTEXT_SEAMS_ENCODING}));
+  EXPECT_EQ(methods,
+            std::set<int>({MESH_EDGEBREAKER_STANDARD_CONTEXT_SEAMS_ENCODING,
+                           MESH_EDGEBREAKER_VALENCE_CONTEXT_SEAMS_ENCODING}));
 }
 
+// Every -uv_pred name (from the registry, so new schemes are covered) on
+// Draco's testdata and the corpus at -cl 10 (valence Edgebreaker from 1000
+// faces), the names taking turns over the meshes so that each name meets
+// several meshes without encoding every mesh with every name.
 TEST(UvSeamEdgebreakerTest, CombinesWithEveryUvPrediction) {
-  const auto mesh = ReadTestMesh(UvTestdataPath("bumpy_cube_sphere.obj"));
-  ASSERT_TRUE(mesh.ok());
-  for (const std::string uv_pred :
-       {"parallelogram", "multi_parallelogram", "portable", "weighted",
-        "auto"}) {
+  std::vector<std::string> uv_preds;
+  for (const UvPredictionName &entry : UvPredictionNames()) {
+    uv_preds.push_back(entry.name);
+  }
+  ASSERT_GE(uv_preds.size(), 6u);
+  std::vector<std::string> meshes;
+  for (const std::string &name : DracoTestdataTexturedMeshes()) {
+    meshes.push_back(DracoTestdataPath(name));
+  }
+  ASSERT_GE(meshes.size(), 2 * uv_preds.size());
+  for (const std::string &path : CorpusMeshPaths()) {
+    meshes.push_back(path);
+  }
+  for (size_t i = 0; i < meshes.size(); ++i) {
+    const auto mesh = ReadTestMesh(meshes[i]);
+    ASSERT_TRUE(mesh.ok()) << meshes[i];
+    const std::string &uv_pred = uv_preds[i % uv_preds.size()];
     ExpectContextSeamsDecodeLikeStock(*mesh.value(), {14, 12, 10, uv_pred},
-                                      uv_pred);
+                                      meshes[i] + " " + uv_pred);
   }
 }
 

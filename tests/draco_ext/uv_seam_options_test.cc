@@ -75,9 +75,11 @@ TEST_F(UvSeamConfigureTest, ContextKeepsStockWhereDracoCodesNoSeams) {
   // Positions only: no seams at all.
   Mesh plain;
   plain.Copy(*mesh_);
-  plain.DeleteAttribute(plain.GetNamedAttributeId(GeometryAttribute::TEX_COORD));
+  plain.DeleteAttribute(
+      plain.GetNamedAttributeId(GeometryAttribute::TEX_COORD));
   const auto plain_stock = EncodeMeshToBytes(plain, {14, 12, 10});
-  const auto plain_context = EncodeMeshToBytes(plain, {14, 12, 10, "", "context"});
+  const auto plain_context =
+      EncodeMeshToBytes(plain, {14, 12, 10, "", "context"});
   ASSERT_TRUE(plain_stock.ok() && plain_context.ok());
   EXPECT_EQ(plain_stock.value(), plain_context.value());
   ExpertEncoder encoder(plain);
@@ -87,8 +89,7 @@ TEST_F(UvSeamConfigureTest, ContextKeepsStockWhereDracoCodesNoSeams) {
 }
 
 TEST_F(UvSeamConfigureTest, ContextNeedsEdgebreakerAndAMesh) {
-  const auto sequential =
-      EncodeMeshToBytes(*mesh_, {14, 12, 0, "", "context"});
+  const auto sequential = EncodeMeshToBytes(*mesh_, {14, 12, 0, "", "context"});
   ASSERT_FALSE(sequential.ok());
   EXPECT_NE(sequential.status().error_msg_string().find("-cl"),
             std::string::npos);

@@ -7,13 +7,21 @@
 #  2. Files written with -uv_seams context make /usr/bin/draco_decoder fail
 #     with an error (never decode), and our draco_decoder decodes them to
 #     exactly what it decodes from the stock file (same OBJ and PLY output).
+#  3. draco_transcoder -uv_seams context: every glTF/GLB asset with texture
+#     coordinates comes out requiring the draco-uv glTF extension, and
+#     /usr/bin/draco_transcoder fails on it with an error, also with the
+#     extension deleted from the JSON.
 #
-#   uv_seams_compatibility_test.sh OUR_ENCODER OUR_DECODER DRACO_TESTDATA
+#   uv_seams_compatibility_test.sh OUR_ENCODER OUR_DECODER OUR_TRANSCODER \
+#       DRACO_TESTDATA
 set -uo pipefail
 
-our_encoder=$1 our_decoder=$2 draco_testdata=$3
+our_encoder=$1 our_decoder=$2 our_transcoder=$3 draco_testdata=$4
 stock_encoder=/usr/bin/draco_encoder stock_decoder=/usr/bin/draco_decoder
-for tool in "${stock_encoder}" "${stock_decoder}"; do
+stock_transcoder=/usr/bin/draco_transcoder
+gltf_json="$(dirname "$0")/gltf_json.py"
+extension=DRACOUV_texcoord_compression
+for tool in "${stock_encoder}" "${stock_decoder}" "${stock_transcoder}"; do
   [[ -x "${tool}" ]] || { echo "missing ${tool} (apt-get install draco)"; exit 1; }
 done
 
@@ -58,5 +66,34 @@ for mesh in "${meshes[@]}"; do
   done
 done
 
-echo "byte-identical -uv_seams draco files: ${identical}; context files rejected by stock: ${rejected}; failures: ${failures}"
-[[ ${identical} -ge 40 && ${rejected} -ge 30 && ${failures} -eq 0 ]]
+gltf_refused=0
+mapfile -t assets < <(cd "${draco_testdata}" &&
+  find . -type f \( -name '*.gltf' -o -name '*.glb' \) | sort)
+for asset in "${assets[@]}"; do
+  input="${draco_testdata}/${asset}"
+  python3 "${gltf_json}" has-texcoords "${input}" || continue
+  rm -rf "${work}/gltf" && mkdir -p "${work}/gltf"
+  "${stock_transcoder}" -i "${input}" -o "${work}/gltf/stock.gltf" >/dev/null 2>&1 ||
+    continue  # Morph targets etc.
+  output="${work}/gltf/out.gltf"
+  "${our_transcoder}" -i "${input}" -o "${output}" -uv_seams context \
+    >"${work}/gltf.log" 2>&1 ||
+    { fail "${asset}: draco_transcoder -uv_seams context failed"; continue; }
+  python3 "${gltf_json}" requires "${output}" "${extension}" ||
+    { fail "${asset}: -uv_seams context output does not require ${extension}"; continue; }
+  gltf_refused=$((gltf_refused + 1))
+  python3 "${gltf_json}" strip "${output}" "${extension}" "${work}/gltf/stripped.gltf"
+  for file in "${output}" "${work}/gltf/stripped.gltf"; do
+    rm -f "${work}/gltf/stock_out.gltf"
+    if "${stock_transcoder}" -i "${file}" -o "${work}/gltf/stock_out.gltf" \
+         >"${work}/refuse.log" 2>&1 || [[ -e "${work}/gltf/stock_out.gltf" ]]; then
+      fail "${asset}: stock draco_transcoder read $(basename "${file}") of -uv_seams context"
+    elif ! grep -q "^Failed" "${work}/refuse.log"; then
+      fail "${asset}: stock draco_transcoder failed without an error message"
+    fi
+  done
+done
+
+echo "byte-identical -uv_seams draco files: ${identical}; context files rejected by stock:" \
+  "${rejected} (.drc), ${gltf_refused} (glTF); failures: ${failures}"
+[[ ${identical} -ge 40 && ${rejected} -ge 30 && ${gltf_refused} -ge 20 && ${failures} -eq 0 ]]
