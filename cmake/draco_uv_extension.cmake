@@ -29,7 +29,18 @@ list(
 list(
   APPEND draco_compression_decode_sources
          "${draco_uv_ext}/uv_residual_coder.cc"
-         "${draco_uv_ext}/uv_residual_coder.h")
+         "${draco_uv_ext}/uv_residual_coder.h"
+         "${draco_uv_ext}/uv_seam_bit_model.cc"
+         "${draco_uv_ext}/uv_seam_bit_model.h"
+         "${draco_uv_ext}/mesh_edgebreaker_traversal_uv_seam_decoder.h"
+         "${draco_uv_ext}/uv_seam_coder.cc"
+         "${draco_uv_ext}/uv_seam_coder.h"
+         "${draco_uv_ext}/uv_seam_edgebreaker.cc"
+         "${draco_uv_ext}/uv_seam_edgebreaker.h"
+         "${draco_uv_ext}/uv_seam_range_coder.cc"
+         "${draco_uv_ext}/uv_seam_range_coder.h"
+         "${draco_uv_ext}/uv_seam_topology.cc"
+         "${draco_uv_ext}/uv_seam_topology.h")
 
 list(
   APPEND draco_compression_encode_sources
@@ -41,4 +52,8 @@ list(
          "${draco_uv_ext}/uv_gltf.h"
          "${draco_uv_ext}/uv_gltf_extension.h"
          "${draco_uv_ext}/uv_prediction_options.cc"
-         "${draco_uv_ext}/uv_prediction_options.h")
+         "${draco_uv_ext}/uv_prediction_options.h"
+         "${draco_uv_ext}/mesh_edgebreaker_traversal_uv_seam_encoder.h"
+         "${draco_uv_ext}/uv_seam_edgebreaker_encoder.cc"
+         "${draco_uv_ext}/uv_seam_options.cc"
+         "${draco_uv_ext}/uv_seam_options.h")

@@ -19,24 +19,34 @@
 
 #include "draco/compression/draco_compression_options.h"
 #include "draco_ext/uv_prediction_options.h"
+#include "draco_ext/uv_seam_options.h"
 
 namespace draco {
 
 namespace {
 
 constexpr char kPredictionFlag[] = "-uv_pred";
+constexpr char kSeamsFlag[] = "-uv_seams";
 
+// Also stock for -uv_seams: "draco" is the stock name of both flags.
 bool IsStockPredictionName(const std::string &name) {
   return name.empty() || name == "draco";
 }
 
-}  // namespace
-
-bool UvCompressionOptions::IsStock() const {
-  return IsStockPredictionName(prediction);
+Status CheckUvSeams(const DracoCompressionOptions &options) {
+  const std::string &name = options.uv.seams;
+  if (IsStockPredictionName(name)) {
+    return OkStatus();
+  }
+  DRACO_RETURN_IF_ERROR(ParseUvSeamCodingName(name).status());
+  if (options.compression_level < 1) {
+    return ErrorStatus(
+        "-uv_seams needs Edgebreaker encoding: compression level 1 or more.");
+  }
+  return OkStatus();
 }
 
-Status CheckUvCompressionOptions(const DracoCompressionOptions &options) {
+Status CheckUvPrediction(const DracoCompressionOptions &options) {
   const std::string &name = options.uv.prediction;
   if (IsStockPredictionName(name)) {
     return OkStatus();
@@ -60,8 +70,20 @@ Status CheckUvCompressionOptions(const DracoCompressionOptions &options) {
   return OkStatus();
 }
 
+}  // namespace
+
+bool UvCompressionOptions::IsStock() const {
+  return IsStockPredictionName(prediction) && IsStockPredictionName(seams);
+}
+
+Status CheckUvCompressionOptions(const DracoCompressionOptions &options) {
+  DRACO_RETURN_IF_ERROR(CheckUvPrediction(options));
+  return CheckUvSeams(options);
+}
+
 bool IsUvCompressionFlag(const char *arg) {
-  return std::strcmp(arg, kPredictionFlag) == 0;
+  return std::strcmp(arg, kPredictionFlag) == 0 ||
+         std::strcmp(arg, kSeamsFlag) == 0;
 }
 
 Status ParseUvCompressionFlag(int argc, char **argv, int *index,
@@ -71,12 +93,19 @@ Status ParseUvCompressionFlag(int argc, char **argv, int *index,
     return ErrorStatus(flag + " needs a value.");
   }
   const std::string value = argv[++*index];
+  if (flag == kSeamsFlag) {
+    DRACO_RETURN_IF_ERROR(ParseUvSeamCodingName(value).status());
+    options->seams = value;
+    return OkStatus();
+  }
   DRACO_RETURN_IF_ERROR(ParseUvPredictionName(value).status());
   options->prediction = value;
   return OkStatus();
 }
 
-std::string UvCompressionUsage() { return UvPredictionUsage(); }
+std::string UvCompressionUsage() {
+  return UvPredictionUsage() + UvSeamCodingUsage();
+}
 
 }  // namespace draco
 

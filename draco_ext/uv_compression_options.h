@@ -42,12 +42,15 @@ struct UvCompressionOptions {
   // A -uv_pred name (uv_prediction_options.h); empty or "draco" keeps stock
   // Draco's choice.
   std::string prediction;
+  // A -uv_seams name (uv_seam_options.h); empty or "draco" keeps stock
+  // Draco's seam coding.
+  std::string seams;
 
   // True when no draco-uv feature is requested.
   bool IsStock() const;
 
   bool operator==(const UvCompressionOptions &other) const {
-    return prediction == other.prediction;
+    return prediction == other.prediction && seams == other.seams;
   }
   bool operator!=(const UvCompressionOptions &other) const {
     return !(*this == other);
@@ -57,7 +60,8 @@ struct UvCompressionOptions {
 // Checks |options.uv| against the rest of |options|: a known -uv_pred name,
 // and for anything but stock Draco Edgebreaker encoding (compression level
 // 1 or more), quantized texture coordinates and, for the methods that need
-// them, quantized positions. Called by DracoCompressionOptions::Check().
+// them, quantized positions; a known -uv_seams name, and for context
+// Edgebreaker encoding. Called by DracoCompressionOptions::Check().
 Status CheckUvCompressionOptions(const DracoCompressionOptions &options);
 
 // Command-line flags of draco-uv for tools built on DracoCompressionOptions

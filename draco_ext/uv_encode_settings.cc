@@ -17,6 +17,7 @@
 #include "draco/compression/encode.h"
 #include "draco/compression/expert_encode.h"
 #include "draco_ext/uv_prediction_options.h"
+#include "draco_ext/uv_seam_options.h"
 
 namespace draco {
 
@@ -45,10 +46,12 @@ Status EncodeMeshWithSettings(const Mesh &mesh,
   encoder.SetSpeedOptions(speed, speed);
   ExpertEncoder expert(mesh);
   expert.Reset(encoder.CreateExpertEncoderOptions(mesh));
+  DRACO_ASSIGN_OR_RETURN(const std::string seam_summary,
+                         ConfigureUvSeams(settings.uv_seams, &mesh, &expert));
   DRACO_ASSIGN_OR_RETURN(const std::string uv_summary,
                          ConfigureUvPrediction(settings.uv_pred, &mesh, &expert));
   if (summary != nullptr) {
-    *summary = uv_summary;
+    *summary = seam_summary + uv_summary;
   }
   return expert.EncodeToBuffer(out);
 }

@@ -29,6 +29,7 @@
 #include "draco/mesh/mesh_attribute_corner_table.h"
 #include "draco/mesh/mesh_misc_functions.h"
 #include "draco_ext/uv_encode_settings.h"
+#include "draco_ext/uv_seam_stats.h"
 
 namespace draco {
 
@@ -306,10 +307,27 @@ namespace {
 
 // Everything measured once per mesh and qt that every scheme is compared to.
 struct UvEvalBaseline {
-  int64_t size_without_uvs = 0;   // At the evaluated -cl.
+  // At the evaluated -cl, per -uv_seams name (the seams of other
+  // non-position attributes, e.g. normals, depend on it).
+  std::map<std::string, int64_t> size_without_uvs;
   int64_t stock_best_uv_bytes = 0;  // Best of -cl 7 and -cl 10.
   std::vector<float> reference_uvs;  // Stock Draco's decoded UVs.
 };
+
+// The measured scheme names: every scheme with every seam coding.
+std::vector<std::string> MeasuredSchemes(const UvEvalOptions &options) {
+  std::vector<std::string> names;
+  for (const std::string &scheme : options.schemes) {
+    if (scheme.find('+') != std::string::npos) {
+      names.push_back(scheme);  // Its seam coding is given.
+      continue;
+    }
+    for (const std::string &seams : options.seams) {
+      names.push_back(seams == "draco" ? scheme : scheme + "+" + seams);
+    }
+  }
+  return names;
+}
 
 StatusOr<int64_t> StockUvBytes(const Mesh &mesh, const Mesh &without,
                                UvEncodeSettings settings) {
@@ -323,9 +341,16 @@ StatusOr<UvEvalBaseline> MeasureBaseline(const Mesh &mesh, const Mesh &without,
                                          const UvEvalOptions &options,
                                          int qt) {
   UvEvalBaseline baseline;
-  UvEncodeSettings settings{options.qp, 0, options.cl, ""};
-  DRACO_ASSIGN_OR_RETURN(baseline.size_without_uvs,
-                         EncodedSize(without, settings));
+  UvEncodeSettings settings{options.qp, 0, options.cl, "", ""};
+  for (const std::string &scheme : MeasuredSchemes(options)) {
+    std::string uv_pred;
+    SplitSchemeName(scheme, &uv_pred, &settings.uv_seams);
+    if (baseline.size_without_uvs.count(settings.uv_seams) == 0) {
+      DRACO_ASSIGN_OR_RETURN(baseline.size_without_uvs[settings.uv_seams],
+                             EncodedSize(without, settings));
+    }
+  }
+  settings.uv_seams.clear();
   settings.qt = qt;
   baseline.stock_best_uv_bytes = std::numeric_limits<int64_t>::max();
   for (const int cl : {7, 10}) {
@@ -343,6 +368,16 @@ StatusOr<UvEvalBaseline> MeasureBaseline(const Mesh &mesh, const Mesh &without,
   return baseline;
 }
 
+// Seam bytes of |mesh| encoded with |settings| (see UvEvalRow::seam_bytes).
+StatusOr<double> SeamBytes(const Mesh &mesh, const UvEncodeSettings &settings) {
+  if (settings.uv_seams.empty() || settings.uv_seams == "draco") {
+    return StockSeamBytes(mesh);
+  }
+  DRACO_ASSIGN_OR_RETURN(const UvSeamProblem problem,
+                         BuildUvSeamProblem(mesh, settings));
+  return static_cast<double>(ContextSeamStreamBytes(problem));
+}
+
 StatusOr<UvEvalRow> MeasureScheme(const std::string &name, const Mesh &mesh,
                                   const UvEvalOptions &options, int qt,
                                   const std::string &scheme,
@@ -352,16 +387,22 @@ StatusOr<UvEvalRow> MeasureScheme(const std::string &name, const Mesh &mesh,
   row.scheme = scheme;
   row.qt = qt;
   row.uv_vertices = CountUvVertices(mesh);
+  UvEncodeSettings settings{options.qp, qt, options.cl, "", ""};
+  SplitSchemeName(scheme, &settings.uv_pred, &settings.uv_seams);
+  if (settings.uv_pred == "draco") {
+    settings.uv_pred.clear();
+  }
+  const int64_t size_without_uvs =
+      baseline.size_without_uvs.at(settings.uv_seams);
   TimedEncoding encoding;
-  DRACO_RETURN_IF_ERROR(EncodeTimed(
-      mesh, {options.qp, qt, options.cl, scheme == "draco" ? "" : scheme},
-      options.repeat, &encoding));
+  DRACO_RETURN_IF_ERROR(
+      EncodeTimed(mesh, settings, options.repeat, &encoding));
   row.enc_ms = encoding.ms;
   DRACO_ASSIGN_OR_RETURN(const auto decoded,
                          DecodeTimed(encoding.buffer, options.repeat, &row.dec_ms));
   row.uv_bytes =
-      static_cast<int64_t>(encoding.buffer.size()) - baseline.size_without_uvs;
-  row.seam_bytes = StockSeamBytes(mesh);
+      static_cast<int64_t>(encoding.buffer.size()) - size_without_uvs;
+  DRACO_ASSIGN_OR_RETURN(row.seam_bytes, SeamBytes(mesh, settings));
   row.bpv = row.uv_vertices > 0 ? 8.0 * row.uv_bytes / row.uv_vertices : 0.0;
   row.ratio_vs_draco =
       static_cast<double>(row.uv_bytes) / baseline.stock_best_uv_bytes;
@@ -372,6 +413,13 @@ StatusOr<UvEvalRow> MeasureScheme(const std::string &name, const Mesh &mesh,
 }
 
 }  // namespace
+
+void SplitSchemeName(const std::string &scheme, std::string *uv_pred,
+                     std::string *uv_seams) {
+  const size_t plus = scheme.find('+');
+  *uv_pred = scheme.substr(0, plus);
+  *uv_seams = plus == std::string::npos ? "draco" : scheme.substr(plus + 1);
+}
 
 StatusOr<std::vector<UvEvalRow>> EvaluateMesh(const std::string &name,
                                               const Mesh &mesh,
@@ -386,7 +434,7 @@ StatusOr<std::vector<UvEvalRow>> EvaluateMesh(const std::string &name,
   for (const int qt : options.qt) {
     DRACO_ASSIGN_OR_RETURN(const UvEvalBaseline baseline,
                            MeasureBaseline(mesh, *without, options, qt));
-    for (const std::string &scheme : options.schemes) {
+    for (const std::string &scheme : MeasuredSchemes(options)) {
       DRACO_ASSIGN_OR_RETURN(
           UvEvalRow row,
           MeasureScheme(name, mesh, options, qt, scheme, baseline));

@@ -36,7 +36,17 @@ struct UvEvalOptions {
                                       "portable", "multi_parallelogram",
                                       "weighted", "auto"};
   int repeat = 3;  // Timings are the minimum over this many runs.
+  // -uv_seams names: every scheme is measured with each. Rows of a coding
+  // other than "draco" name their scheme "<scheme>+<coding>" (a scheme may
+  // also be given so, e.g. "weighted+context"). The reference (stock
+  // Draco's best of -cl 7 and 10) keeps stock seams.
+  std::vector<std::string> seams = {"draco"};
 };
+
+// The -uv_pred and -uv_seams names of a measured scheme name
+// ("weighted+context": weighted, context; "weighted": weighted, draco).
+void SplitSchemeName(const std::string &scheme, std::string *uv_pred,
+                     std::string *uv_seams);
 
 // One (mesh, scheme, qt) measurement.
 struct UvEvalRow {
@@ -45,7 +55,11 @@ struct UvEvalRow {
   int qt = 0;
   int64_t uv_vertices = 0;  // Distinct (position, UV) pairs, all UV sets.
   int64_t uv_bytes = 0;     // size(with UVs) - size(without UVs).
-  double seam_bytes = 0;    // Part of uv_bytes spent on seams.
+  double seam_bytes = 0;    // Part of uv_bytes spent on seams: stock
+                            // Draco's bit streams of the TEX_COORD
+                            // attributes, or with -uv_seams context the
+                            // exact stream, which codes the seams of all
+                            // non-position attributes jointly.
   double bpv = 0;           // 8 * uv_bytes / uv_vertices.
   double rmse = 0;          // Eq. (9) in UV units, all UV sets.
   double enc_ms = 0;

@@ -21,6 +21,7 @@
 #include "draco/compression/draco_compression_options.h"
 #include "draco/core/encoder_buffer.h"
 #include "draco_ext/uv_prediction_options.h"
+#include "draco_ext/uv_seam_options.h"
 
 namespace draco {
 
@@ -91,17 +92,22 @@ Status ConfigureUvCompressionForGltf(
   if (options.IsStock()) {
     return OkStatus();
   }
-  // The per-attribute summary is for command-line tools; a library stays
+  // The per-attribute summaries are for command-line tools; a library stays
   // quiet.
   DRACO_RETURN_IF_ERROR(
+      ConfigureUvSeams(options.seams, &mesh, &encoder).status());
+  const bool context_seams =
+      GetUvSeamCoding(encoder.options()) != UvSeamCoding::kDraco;
+  DRACO_RETURN_IF_ERROR(
       ConfigureUvPrediction(options.prediction, &mesh, &encoder).status());
-  if (IsAutoUvPrediction(options.prediction) &&
+  // With context seams the primitive needs the extension anyway.
+  if (IsAutoUvPrediction(options.prediction) && !context_seams &&
       extensions_required->count(kUvGltfExtension) == 0 &&
       UsesDracoUvScheme(mesh, encoder)) {
     DRACO_RETURN_IF_ERROR(
         KeepDracoUvOnlyIfItPaysForTheExtension(mesh, &encoder));
   }
-  if (UsesDracoUvScheme(mesh, encoder)) {
+  if (UsesDracoUvScheme(mesh, encoder) || context_seams) {
     extensions_used->insert(kUvGltfExtension);
     extensions_required->insert(kUvGltfExtension);
   }

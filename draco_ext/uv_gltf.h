@@ -37,8 +37,10 @@ namespace draco {
 // GltfAsset::CompressMeshWithDraco() (patches/0015) with quantization set
 // and V already flipped to glTF's convention (the coders infer UV
 // orientation from the data, so the mirror costs nothing). When a TEX_COORD
-// attribute ends up with a draco-uv scheme, adds kUvGltfExtension to
-// |extensions_used| and |extensions_required|. With -uv_pred auto, the first
+// attribute ends up with a draco-uv scheme or the seams with draco-uv's
+// coding (-uv_seams context, which applies to every primitive with an
+// attribute besides positions), adds kUvGltfExtension to |extensions_used|
+// and |extensions_required|. With -uv_pred auto and stock seams, the first
 // primitive that would need the extension keeps draco-uv's schemes only if
 // they save more bytes than the extension adds to the JSON, so auto never
 // makes a file bigger than stock coding. Stock options change nothing.

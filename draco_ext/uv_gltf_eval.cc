@@ -24,6 +24,7 @@
 
 #include "draco/io/scene_io.h"
 #include "draco/tools/draco_transcoder_lib.h"
+#include "draco_ext/uv_eval.h"
 #include "draco_ext/uv_gltf_extension.h"
 
 namespace draco {
@@ -233,7 +234,8 @@ StatusOr<std::vector<UvGltfEvalRow>> EvaluateGltfAsset(
     row.stock_bytes = stock_bytes;
 
     DracoCompressionOptions scheme_options = options.compression;
-    scheme_options.uv.prediction = scheme;
+    SplitSchemeName(scheme, &scheme_options.uv.prediction,
+                    &scheme_options.uv.seams);
     const std::string file = output_path(scheme);
     const auto scene = TranscodeAndRead(input, file, scheme_options);
     Status status = scene.status();

@@ -32,7 +32,8 @@ namespace draco {
 struct UvGltfEvalOptions {
   // draco_transcoder's defaults: -qp 11 -qt 10, compression level 7.
   DracoCompressionOptions compression;
-  // -uv_pred names compared with stock Draco.
+  // -uv_pred names compared with stock Draco; "<name>+<seams>" also sets
+  // -uv_seams (e.g. "weighted+context", "draco+context").
   std::vector<std::string> schemes = {"auto"};
   // Output container: false writes .gltf + .bin (images beside them, not
   // counted), true writes .glb (images inside, counted).

@@ -14,14 +14,15 @@
 //
 // The glTF extension that marks files using draco-uv's coders.
 //
-// A file whose Draco buffers use a draco-uv prediction scheme lists
-// kUvGltfExtension in extensionsUsed and extensionsRequired. Like
-// KHR_mesh_quantization it has no JSON object of its own: it says that the
-// Draco buffers of KHR_draco_mesh_compression may use prediction scheme ids
-// that only a decoder with draco-uv knows. Loaders that honour
-// extensionsRequired (Draco's own glTF reader, Babylon.js) refuse such a
-// file up front; for loaders that do not (three.js warns and goes on), the
-// bitstream guard (uv_bitstream_guard.h) makes the Draco decoder fail.
+// A file whose Draco buffers use a draco-uv prediction scheme or draco-uv's
+// seam coding (-uv_seams context) lists kUvGltfExtension in extensionsUsed
+// and extensionsRequired. Like KHR_mesh_quantization it has no JSON object
+// of its own: it says that the Draco buffers of KHR_draco_mesh_compression
+// may use prediction scheme or Edgebreaker method ids that only a decoder
+// with draco-uv knows. Loaders that honour extensionsRequired (Draco's own
+// glTF reader, Babylon.js) refuse such a file up front; for loaders that do
+// not (three.js warns and goes on), the Draco decoder fails on the unknown
+// ids (uv_bitstream_guard.h, uv_seam_edgebreaker.h).
 #ifndef DRACO_EXT_UV_GLTF_EXTENSION_H_
 #define DRACO_EXT_UV_GLTF_EXTENSION_H_
 

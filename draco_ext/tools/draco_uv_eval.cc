@@ -53,6 +53,9 @@ void Usage() {
       "  --cl N           compression level, default 10\n"
       "  --schemes LIST   -uv_pred names, default "
       "draco,parallelogram,portable,multi_parallelogram,weighted,auto\n"
+      "  --seams LIST     -uv_seams names (draco, context), each with every\n"
+      "                   scheme, default draco; a scheme may name its own\n"
+      "                   as <scheme>+<seams>, e.g. weighted+context\n"
       "  --repeat N       timing runs (minimum reported), default 3\n"
       "  --csv FILE       one row per (mesh, scheme, qt)\n"
       "  --plot FILE      rate-distortion chart (PNG or SVG, needs python3 "
@@ -113,6 +116,8 @@ bool ParseArgs(int argc, char **argv, Args *args) {
       }
     } else if (flag == "--schemes") {
       args->options.schemes = SplitList(argv[++i]);
+    } else if (flag == "--seams") {
+      args->options.seams = SplitList(argv[++i]);
     } else if (flag == "--csv") {
       args->csv = argv[++i];
     } else if (flag == "--plot") {
@@ -125,7 +130,7 @@ bool ParseArgs(int argc, char **argv, Args *args) {
     }
   }
   return !args->input.empty() && !args->options.qt.empty() &&
-         !args->options.schemes.empty();
+         !args->options.schemes.empty() && !args->options.seams.empty();
 }
 
 bool IsMeshFile(const fs::path &path) {

@@ -19,6 +19,7 @@
 
 #include "draco/compression/draco_compression_options.h"
 #include "draco_ext/uv_prediction_options.h"
+#include "draco_ext/uv_seam_options.h"
 #include "gtest/gtest.h"
 
 namespace draco {
@@ -113,6 +114,43 @@ TEST(UvCompressionFlagTest, UsageListsEveryName) {
   for (const UvPredictionName &entry : UvPredictionNames()) {
     EXPECT_NE(UvCompressionUsage().find(entry.name), std::string::npos);
   }
+  for (const UvSeamCodingName &entry : UvSeamCodingNames()) {
+    EXPECT_NE(UvCompressionUsage().find(entry.name), std::string::npos);
+  }
+}
+
+TEST(UvCompressionFlagTest, ParsesUvSeamsNextToUvPred) {
+  EXPECT_TRUE(IsUvCompressionFlag("-uv_seams"));
+  UvCompressionOptions options;
+  int index = 1;
+  ASSERT_TRUE(Parse({"tool", "-uv_seams", "context", "-uv_pred", "weighted"},
+                    &options, &index)
+                  .ok());
+  EXPECT_EQ(index, 2);
+  index = 3;
+  ASSERT_TRUE(Parse({"tool", "-uv_seams", "context", "-uv_pred", "weighted"},
+                    &options, &index)
+                  .ok());
+  EXPECT_EQ(options.seams, "context");
+  EXPECT_EQ(options.prediction, "weighted");
+  EXPECT_FALSE(options.IsStock());
+  index = 1;
+  EXPECT_FALSE(Parse({"tool", "-uv_seams", "static"}, &options, &index).ok());
+}
+
+TEST(UvCompressionOptionsTest, CheckSeamsNeedKnownNameAndEdgebreaker) {
+  DracoCompressionOptions options;
+  options.uv.seams = "draco";
+  EXPECT_TRUE(options.uv.IsStock());
+  options.uv.seams = "context";
+  EXPECT_FALSE(options.uv.IsStock());
+  EXPECT_TRUE(options.Check().ok());
+  EXPECT_NE(options, DracoCompressionOptions());
+  options.compression_level = 0;
+  EXPECT_FALSE(options.Check().ok());
+  options.compression_level = 7;
+  options.uv.seams = "contxt";
+  EXPECT_FALSE(options.Check().ok());
 }
 
 }  // namespace

@@ -139,6 +139,31 @@ TEST(UvGltfTranscodeTest, EveryAssetRoundTripsLikeStockCoding) {
   EXPECT_GE(textured, 60);
 }
 
+// draco_transcoder -uv_seams context, alone and with -uv_pred weighted:
+// every asset reads back like stock coding, and every textured one requires
+// the draco-uv extension (its seams are draco-uv's).
+TEST(UvGltfTranscodeTest, ContextSeamsRoundTripAndRequireTheExtension) {
+  UvGltfEvalOptions options;
+  options.schemes = {"draco+context", "weighted+context"};
+  int textured = 0;
+  for (const std::string &asset : DracoTestdataGltfAssets()) {
+    const auto rows = EvaluateGltfAsset(DracoTestdataPath(asset), asset,
+                                        options, UvTempPath(""));
+    if (!rows.ok()) {
+      continue;  // Morph targets etc.: stock draco_transcoder fails too.
+    }
+    for (const UvGltfEvalRow &row : rows.value()) {
+      EXPECT_TRUE(row.round_trip_ok)
+          << asset << " " << row.scheme << ": " << row.detail;
+      if (row.textured_primitives > 0) {
+        ++textured;
+        EXPECT_TRUE(row.requires_extension) << asset << " " << row.scheme;
+      }
+    }
+  }
+  EXPECT_GE(textured, 60);
+}
+
 TEST(UvGltfTranscodeTest, AutoRoundTripsOnAssetsOfEveryKind) {
   UvGltfEvalOptions options;
   options.schemes = {"auto"};

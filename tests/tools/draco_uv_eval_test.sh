@@ -8,6 +8,10 @@
 #  3. Bad paths and unreadable meshes give a clear error and a non-zero exit;
 #     a folder with one broken mesh reports it and evaluates the others.
 #  4. --plot writes a chart (when python3 has matplotlib).
+#  5. --seams draco,context adds "<scheme>+context" rows whose UV bytes are
+#     those of draco_encoder -uv_seams context, and whose seam bytes differ
+#     from the stock rows' by what the files' sizes differ (within 2 bytes:
+#     stock seam bytes are counted on the position corner table).
 #
 #   draco_uv_eval_test.sh UV_EVAL ENCODER DECODER MESH
 set -uo pipefail
@@ -21,8 +25,8 @@ fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 python=/usr/bin/python3
 [[ -x ${python} ]] || python=python3
 
-"${uv_eval}" "${mesh}" --qt 10 --schemes draco,weighted --repeat 1 --quiet \
-  --csv "${work}/eval.csv" >"${work}/eval.txt" 2>&1 ||
+"${uv_eval}" "${mesh}" --qt 10 --schemes draco,weighted --seams draco,context \
+  --repeat 1 --quiet --csv "${work}/eval.csv" >"${work}/eval.txt" 2>&1 ||
   { cat "${work}/eval.txt"; fail "draco_uv_eval failed on ${mesh}"; }
 
 size() { stat -c %s "$1"; }
@@ -37,19 +41,28 @@ encode "${work}/none7.drc" -cl 7 --skip TEX_COORD
 encode "${work}/stock10.drc" -cl 10 -qt 10
 encode "${work}/stock7.drc" -cl 7 -qt 10
 encode "${work}/weighted.drc" -cl 10 -qt 10 -uv_pred weighted
+encode "${work}/none_context.drc" -cl 10 --skip TEX_COORD -uv_seams context
+encode "${work}/context.drc" -cl 10 -qt 10 -uv_seams context
+encode "${work}/weighted_context.drc" -cl 10 -qt 10 -uv_pred weighted -uv_seams context
 stock10=$(($(size "${work}/stock10.drc") - $(size "${work}/none10.drc")))
 stock7=$(($(size "${work}/stock7.drc") - $(size "${work}/none7.drc")))
 stock_best=$((stock10 < stock7 ? stock10 : stock7))
 weighted=$(($(size "${work}/weighted.drc") - $(size "${work}/none10.drc")))
+context=$(($(size "${work}/context.drc") - $(size "${work}/none_context.drc")))
+weighted_context=$(($(size "${work}/weighted_context.drc") - $(size "${work}/none_context.drc")))
 "${decoder}" -i "${work}/weighted.drc" -o "${work}/weighted.obj" >/dev/null 2>&1 ||
   fail "draco_decoder"
 
-"${python}" - "${work}/eval.csv" "${stock10}" "${weighted}" "${stock_best}" \
-  "${mesh}" "${work}/weighted.obj" "${here}/uv_rmse.py" <<'EOF' || fail "numbers disagree"
+"${python}" - "${work}/eval.csv" "${stock10}" "${weighted}" "${context}" \
+  "${weighted_context}" "${stock_best}" "${mesh}" "${work}/weighted.obj" \
+  "${here}/uv_rmse.py" <<'EOF' || fail "numbers disagree"
 import csv, subprocess, sys
-path, stock10, weighted, stock_best, mesh, decoded, rmse_tool = sys.argv[1:]
+(path, stock10, weighted, context, weighted_context, stock_best, mesh, decoded,
+ rmse_tool) = sys.argv[1:]
 rows = {r["scheme"]: r for r in csv.DictReader(open(path))}
-expected = {"draco": int(stock10), "weighted": int(weighted)}
+expected = {"draco": int(stock10), "weighted": int(weighted),
+            "draco+context": int(context),
+            "weighted+context": int(weighted_context)}
 out = subprocess.run([sys.executable, rmse_tool, mesh, decoded], check=True,
                      capture_output=True, text=True).stdout.split()
 rmse, uv_vertices = float(out[0]), int(out[1])
@@ -72,6 +85,14 @@ for scheme, uv_bytes in expected.items():
             ok = False
     if row["round_trip"] != "ok":
         print(f"{scheme}: round trip {row['round_trip']}")
+        ok = False
+for scheme in ("draco", "weighted"):
+    stock, ours = rows[scheme], rows[scheme + "+context"]
+    saved_file = int(stock["uv_bytes"]) - int(ours["uv_bytes"])
+    saved_seams = float(stock["seam_bytes"]) - float(ours["seam_bytes"])
+    if saved_file <= 0 or abs(saved_file - saved_seams) > 2:
+        print(f"{scheme}+context: saves {saved_file} bytes, seam bytes "
+              f"{saved_seams}")
         ok = False
 sys.exit(0 if ok else 1)
 EOF
