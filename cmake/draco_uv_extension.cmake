@@ -9,6 +9,11 @@ set(draco_uv_schemes "${draco_uv_root}/prediction_schemes")
 set(draco_uv_ext "${draco_uv_root}/draco_ext")
 
 list(APPEND draco_include_paths "${draco_uv_root}")
+# The Laplacian texture coordinate coder needs Eigen, which Draco itself puts
+# on the include path only for its transcoder.
+if(DRACO_EIGEN_PATH)
+  list(APPEND draco_include_paths "${DRACO_EIGEN_PATH}")
+endif()
 
 list(
   APPEND draco_compression_attributes_pred_schemes_dec_sources
@@ -30,6 +35,18 @@ list(
   APPEND draco_compression_decode_sources
          "${draco_uv_ext}/uv_residual_coder.cc"
          "${draco_uv_ext}/uv_residual_coder.h")
+
+# The Laplacian texture coordinate coder (encoder and decoder).
+list(
+  APPEND draco_compression_decode_sources
+         "${draco_uv_ext}/uv_laplacian_coder.cc"
+         "${draco_uv_ext}/uv_laplacian_coder.h"
+         "${draco_uv_ext}/uv_laplacian_operator.cc"
+         "${draco_uv_ext}/uv_laplacian_operator.h"
+         "${draco_uv_ext}/uv_laplacian_system.cc"
+         "${draco_uv_ext}/uv_laplacian_system.h"
+         "${draco_uv_ext}/uv_sparse_cholesky.cc"
+         "${draco_uv_ext}/uv_sparse_cholesky.h")
 
 list(
   APPEND draco_compression_encode_sources
