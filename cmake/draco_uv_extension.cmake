@@ -20,6 +20,8 @@ list(
          "${draco_uv_ext}/uv_bitstream_guard.h"
          "${draco_uv_ext}/uv_fixed_point.h"
          "${draco_uv_ext}/uv_processing_order.h"
+         "${draco_uv_schemes}/mesh_prediction_scheme_tex_coords_laplacian_decoder.h"
+         "${draco_uv_schemes}/mesh_prediction_scheme_tex_coords_laplacian_shared.h"
          "${draco_uv_schemes}/mesh_prediction_scheme_tex_coords_weighted_decoder.h"
          "${draco_uv_schemes}/mesh_prediction_scheme_tex_coords_weighted_predictor.h"
          "${draco_uv_schemes}/mesh_prediction_scheme_tex_coords_weighted_shared.h"
@@ -27,6 +29,7 @@ list(
 
 list(
   APPEND draco_compression_attributes_pred_schemes_enc_sources
+         "${draco_uv_schemes}/mesh_prediction_scheme_tex_coords_laplacian_encoder.h"
          "${draco_uv_schemes}/mesh_prediction_scheme_tex_coords_weighted_encoder.h")
 
 # Object libraries with Draco's include paths (the prediction scheme lists
@@ -52,5 +55,7 @@ list(
   APPEND draco_compression_encode_sources
          "${draco_uv_ext}/uv_encode_settings.cc"
          "${draco_uv_ext}/uv_encode_settings.h"
+         "${draco_uv_ext}/uv_laplacian_options.cc"
+         "${draco_uv_ext}/uv_laplacian_options.h"
          "${draco_uv_ext}/uv_prediction_options.cc"
          "${draco_uv_ext}/uv_prediction_options.h")

@@ -345,8 +345,8 @@ class LaplacianEncoder {
 
 // --- Decoder ---------------------------------------------------------------
 
-bool DecodeHeader(DecoderBuffer *buffer,
-                  UvLaplacianKind *kind, double *step) {
+bool DecodeHeader(DecoderBuffer *buffer, UvLaplacianKind *kind, double *step,
+                  int *frame) {
   uint8_t kind_byte, step_bits, frame_bits;
   if (!buffer->Decode(&kind_byte) || !buffer->Decode(&step_bits) ||
       !buffer->Decode(&frame_bits) || kind_byte >= kNumUvLaplacianKinds ||
@@ -356,6 +356,7 @@ bool DecodeHeader(DecoderBuffer *buffer,
   }
   *kind = static_cast<UvLaplacianKind>(kind_byte);
   *step = StepSize(step_bits, frame_bits);
+  *frame = frame_bits;
   return true;
 }
 
@@ -466,11 +467,11 @@ bool EncodeUvLaplacian(const UvLaplacianMesh &mesh, const UvValues &uv,
 }
 
 bool DecodeUvLaplacian(const UvLaplacianMesh &mesh, DecoderBuffer *buffer,
-                       UvValues *uv) {
+                       UvValues *uv, int *frame_bits) {
   const int n = mesh.num_vertices();
   UvLaplacianKind kind;
   double step;
-  if (!DecodeHeader(buffer, &kind, &step)) {
+  if (!DecodeHeader(buffer, &kind, &step, frame_bits)) {
     return false;
   }
   const LaplacianSetup setup(mesh, kind);

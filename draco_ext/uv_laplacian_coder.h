@@ -89,10 +89,12 @@ bool EncodeUvLaplacian(const UvLaplacianMesh &mesh, const UvValues &uv,
                        EncoderBuffer *buffer,
                        UvValues *reconstruction = nullptr);
 
-// Decodes texture coordinates (frame units, not rounded) for |mesh|. False
-// on truncated, inconsistent or out-of-range data, or a singular system.
+// Decodes texture coordinates (frame units, not rounded) for |mesh| and the
+// frame's bits. False on truncated, inconsistent or out-of-range data, or a
+// singular system. |buffer| needs Draco's bitstream version (2.0 or later)
+// for its symbol coding.
 bool DecodeUvLaplacian(const UvLaplacianMesh &mesh, DecoderBuffer *buffer,
-                       UvValues *uv);
+                       UvValues *uv, int *frame_bits);
 
 }  // namespace draco
 

@@ -17,6 +17,7 @@
 #include <limits>
 
 #include "draco/core/encoder_buffer.h"
+#include "draco_ext/uv_laplacian_options.h"
 
 namespace draco {
 
@@ -30,7 +31,8 @@ constexpr int kSequentialEncodingSpeed = 10;
 
 bool NeedsQuantizedPositions(PredictionSchemeMethod method) {
   return method == MESH_PREDICTION_TEX_COORDS_PORTABLE ||
-         method == MESH_PREDICTION_TEX_COORDS_WEIGHTED;
+         method == MESH_PREDICTION_TEX_COORDS_WEIGHTED ||
+         method == MESH_PREDICTION_TEX_COORDS_LAPLACIAN;
 }
 
 std::vector<int> TexCoordAttributeIds(const Mesh &mesh) {
@@ -94,12 +96,13 @@ std::string AttributeLabel(const Mesh &mesh, int att_id) {
          std::to_string(att_id) + ")";
 }
 
-// Candidates of -uv_pred auto; stock Draco's choice comes first so that it
-// wins ties.
+// Candidates of -uv_pred auto (lossless schemes only); stock Draco's choice
+// comes first so that it wins ties.
 std::vector<PredictionSchemeMethod> AutoCandidates() {
   std::vector<PredictionSchemeMethod> candidates;
   for (const UvPredictionName &entry : UvPredictionNames()) {
-    if (std::string(entry.name) != kAutoName) {
+    if (std::string(entry.name) != kAutoName &&
+        !IsLossyUvPrediction(entry.method)) {
       candidates.push_back(entry.method);
     }
   }
@@ -148,8 +151,14 @@ const std::vector<UvPredictionName> &UvPredictionNames() {
        "Draco's TEX_COORDS_PORTABLE prediction"},
       {"weighted", MESH_PREDICTION_TEX_COORDS_WEIGHTED,
        "mesh-guided weighted parallelogram (draco-uv)"},
+      {"laplacian_tutte", MESH_PREDICTION_TEX_COORDS_LAPLACIAN,
+       "lossy Laplacian coding, Tutte weights (draco-uv)"},
+      {"laplacian_cotan", MESH_PREDICTION_TEX_COORDS_LAPLACIAN,
+       "lossy Laplacian coding, cotangent weights (draco-uv)"},
+      {"laplacian_mv", MESH_PREDICTION_TEX_COORDS_LAPLACIAN,
+       "lossy Laplacian coding, mean-value weights (draco-uv)"},
       {kAutoName, PREDICTION_UNDEFINED,
-       "smallest of the above, per attribute"},
+       "smallest of the lossless schemes above, per attribute"},
   };
   return names;
 }
@@ -163,7 +172,7 @@ std::string UvPredictionUsage() {
     line.resize(std::max<size_t>(line.size() + 1, 48), ' ');
     usage += line + entry.description + "\n";
   }
-  return usage;
+  return usage + UvAnchorsUsage();
 }
 
 bool IsAutoUvPrediction(const std::string &name) { return name == kAutoName; }
@@ -216,6 +225,9 @@ StatusOr<std::string> ConfigureUvPrediction(const std::string &name,
     }
     DRACO_RETURN_IF_ERROR(CheckSettingsFor(method, *mesh, *encoder));
     DRACO_RETURN_IF_ERROR(encoder->SetAttributePredictionScheme(att_id, method));
+    if (IsUvLaplacianName(name)) {
+      DRACO_RETURN_IF_ERROR(ConfigureUvLaplacian(name, att_id, encoder));
+    }
     summary += "UV prediction: " + AttributeLabel(*mesh, att_id) + " -> " +
                name + "\n";
   }

@@ -22,7 +22,10 @@
 //                    MESH_PREDICTION_CONSTRAINED_MULTI_PARALLELOGRAM
 //   portable         MESH_PREDICTION_TEX_COORDS_PORTABLE
 //   weighted         MESH_PREDICTION_TEX_COORDS_WEIGHTED (draco-uv)
-//   auto             per attribute, the smallest of all of the above
+//   laplacian_tutte, laplacian_cotan, laplacian_mv
+//                    MESH_PREDICTION_TEX_COORDS_LAPLACIAN (draco-uv, lossy:
+//                    see uv_laplacian_options.h)
+//   auto             per attribute, the smallest of the lossless ones above
 #ifndef DRACO_EXT_UV_PREDICTION_OPTIONS_H_
 #define DRACO_EXT_UV_PREDICTION_OPTIONS_H_
 
