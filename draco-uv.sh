@@ -20,6 +20,10 @@ readonly PACKAGES=(
   libeigen3-dev libtinygltf-dev libstb-dev nlohmann-json3-dev googletest
   draco python3 python3-matplotlib clang
 )
+# Commands the tests need, each with the Debian package that provides it;
+# a command already on PATH (e.g. from another Node.js distribution) is used
+# as it is. node and npm run stock Draco's WebAssembly decoder (npm draco3d).
+readonly COMMAND_PACKAGES=(node:nodejs npm:npm)
 
 die() { echo "draco-uv.sh: $*" >&2; exit 1; }
 
@@ -28,6 +32,10 @@ install_missing_packages() {
   for package in "${PACKAGES[@]}"; do
     dpkg-query -W -f='${Status}\n' "${package}" 2>/dev/null |
       grep -q '^install ok installed$' || missing+=("${package}")
+  done
+  local entry
+  for entry in "${COMMAND_PACKAGES[@]}"; do
+    command -v "${entry%%:*}" >/dev/null || missing+=("${entry#*:}")
   done
   [[ ${#missing[@]} -eq 0 ]] && return
   if [[ $(id -u) -ne 0 ]]; then

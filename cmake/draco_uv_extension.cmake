@@ -53,8 +53,13 @@ list(
 
 list(
   APPEND draco_compression_encode_sources
+         "${draco_uv_ext}/uv_compression_options.cc"
+         "${draco_uv_ext}/uv_compression_options.h"
          "${draco_uv_ext}/uv_encode_settings.cc"
          "${draco_uv_ext}/uv_encode_settings.h"
+         "${draco_uv_ext}/uv_gltf.cc"
+         "${draco_uv_ext}/uv_gltf.h"
+         "${draco_uv_ext}/uv_gltf_extension.h"
          "${draco_uv_ext}/uv_laplacian_options.cc"
          "${draco_uv_ext}/uv_laplacian_options.h"
          "${draco_uv_ext}/uv_prediction_options.cc"

@@ -77,7 +77,8 @@ function(draco_uv_prepare_draco_source)
     message(FATAL_ERROR "${source_dir} is not a Draco source tree.")
   endif()
 
-  file(GLOB patches "${CMAKE_CURRENT_SOURCE_DIR}/patches/*.patch")
+  file(GLOB patches CONFIGURE_DEPENDS
+       "${CMAKE_CURRENT_SOURCE_DIR}/patches/*.patch")
   list(SORT patches)
   draco_uv_patch_stamp("${source_dir}" "${patches}" stamp)
   set(patched_dir "${CMAKE_BINARY_DIR}/draco-patched")

@@ -18,6 +18,7 @@
 
 #include "draco/core/encoder_buffer.h"
 #include "draco_ext/uv_laplacian_options.h"
+#include "prediction_schemes/uv_stencil_geometry.h"
 
 namespace draco {
 
@@ -29,10 +30,9 @@ constexpr char kAutoName[] = "auto";
 // connectivity that mesh prediction schemes need.
 constexpr int kSequentialEncodingSpeed = 10;
 
-bool NeedsQuantizedPositions(PredictionSchemeMethod method) {
-  return method == MESH_PREDICTION_TEX_COORDS_PORTABLE ||
-         method == MESH_PREDICTION_TEX_COORDS_WEIGHTED ||
-         method == MESH_PREDICTION_TEX_COORDS_LAPLACIAN;
+bool IsWeighted(PredictionSchemeMethod method) {
+  return method == MESH_PREDICTION_TEX_COORDS_WEIGHTED ||
+         method == MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI;
 }
 
 std::vector<int> TexCoordAttributeIds(const Mesh &mesh) {
@@ -62,10 +62,18 @@ Status CheckCommonSettings(const ExpertEncoder &encoder, int att_id) {
   return OkStatus();
 }
 
-// Checks what |method| needs beyond CheckCommonSettings().
+// Checks what |method| needs beyond CheckCommonSettings() to code the
+// TEX_COORD attribute |att_id|.
 Status CheckSettingsFor(PredictionSchemeMethod method, const Mesh &mesh,
-                        const ExpertEncoder &encoder) {
-  if (NeedsQuantizedPositions(method)) {
+                        const ExpertEncoder &encoder, int att_id) {
+  if (IsWeighted(method) &&
+      QuantizationBits(encoder, att_id) > kUvStencilMaxUvQuantizationBits) {
+    return Status(Status::DRACO_ERROR,
+                  "-uv_pred " + UvPredictionNameOf(method) +
+                      " supports -qt up to " +
+                      std::to_string(kUvStencilMaxUvQuantizationBits) + ".");
+  }
+  if (UvPredictionNeedsQuantizedPositions(method)) {
     const int pos_id = mesh.GetNamedAttributeId(GeometryAttribute::POSITION);
     if (pos_id < 0) {
       return Status(Status::DRACO_ERROR,
@@ -96,12 +104,14 @@ std::string AttributeLabel(const Mesh &mesh, int att_id) {
          std::to_string(att_id) + ")";
 }
 
-// Candidates of -uv_pred auto (lossless schemes only); stock Draco's choice
-// comes first so that it wins ties.
+// Candidates of -uv_pred auto: every lossless scheme that decodes about as
+// fast as stock Draco (so not weighted_multi, nor the lossy Laplacians). Stock
+// Draco's choice comes first so that it wins ties.
 std::vector<PredictionSchemeMethod> AutoCandidates() {
   std::vector<PredictionSchemeMethod> candidates;
   for (const UvPredictionName &entry : UvPredictionNames()) {
     if (std::string(entry.name) != kAutoName &&
+        entry.method != MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI &&
         !IsLossyUvPrediction(entry.method)) {
       candidates.push_back(entry.method);
     }
@@ -117,7 +127,7 @@ StatusOr<std::string> ChooseSmallestFor(const Mesh &mesh, int att_id,
   size_t best_size = std::numeric_limits<size_t>::max();
   size_t stock_size = 0;
   for (const PredictionSchemeMethod method : AutoCandidates()) {
-    if (!CheckSettingsFor(method, mesh, *encoder).ok()) {
+    if (!CheckSettingsFor(method, mesh, *encoder, att_id).ok()) {
       continue;
     }
     DRACO_RETURN_IF_ERROR(encoder->SetAttributePredictionScheme(att_id, method));
@@ -151,6 +161,8 @@ const std::vector<UvPredictionName> &UvPredictionNames() {
        "Draco's TEX_COORDS_PORTABLE prediction"},
       {"weighted", MESH_PREDICTION_TEX_COORDS_WEIGHTED,
        "mesh-guided weighted parallelogram (draco-uv)"},
+      {"weighted_multi", MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI,
+       "weighted, all stencils: smaller, slower to decode"},
       {"laplacian_tutte", MESH_PREDICTION_TEX_COORDS_LAPLACIAN,
        "lossy Laplacian coding, Tutte weights (draco-uv)"},
       {"laplacian_cotan", MESH_PREDICTION_TEX_COORDS_LAPLACIAN,
@@ -158,7 +170,7 @@ const std::vector<UvPredictionName> &UvPredictionNames() {
       {"laplacian_mv", MESH_PREDICTION_TEX_COORDS_LAPLACIAN,
        "lossy Laplacian coding, mean-value weights (draco-uv)"},
       {kAutoName, PREDICTION_UNDEFINED,
-       "smallest of the lossless schemes above, per attribute"},
+       "smallest of the lossless schemes above but weighted_multi"},
   };
   return names;
 }
@@ -199,6 +211,18 @@ std::string UvPredictionNameOf(PredictionSchemeMethod method) {
   return std::to_string(static_cast<int>(method));
 }
 
+bool UvPredictionNeedsQuantizedPositions(PredictionSchemeMethod method) {
+  return method == MESH_PREDICTION_TEX_COORDS_PORTABLE || IsWeighted(method) ||
+         method == MESH_PREDICTION_TEX_COORDS_LAPLACIAN;
+}
+
+bool IsDracoUvPredictionMethod(PredictionSchemeMethod method) {
+  // MESH_PREDICTION_GEOMETRIC_NORMAL is the last id of stock Draco 1.5.5 to
+  // 1.5.7; draco-uv's ids follow it (patches/0001).
+  return method > MESH_PREDICTION_GEOMETRIC_NORMAL &&
+         method < NUM_PREDICTION_SCHEMES;
+}
+
 StatusOr<std::string> ConfigureUvPrediction(const std::string &name,
                                             const Mesh *mesh,
                                             ExpertEncoder *encoder) {
@@ -223,7 +247,7 @@ StatusOr<std::string> ConfigureUvPrediction(const std::string &name,
       summary += line;
       continue;
     }
-    DRACO_RETURN_IF_ERROR(CheckSettingsFor(method, *mesh, *encoder));
+    DRACO_RETURN_IF_ERROR(CheckSettingsFor(method, *mesh, *encoder, att_id));
     DRACO_RETURN_IF_ERROR(encoder->SetAttributePredictionScheme(att_id, method));
     if (IsUvLaplacianName(name)) {
       DRACO_RETURN_IF_ERROR(ConfigureUvLaplacian(name, att_id, encoder));

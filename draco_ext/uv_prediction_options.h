@@ -21,11 +21,16 @@
 //   multi_parallelogram
 //                    MESH_PREDICTION_CONSTRAINED_MULTI_PARALLELOGRAM
 //   portable         MESH_PREDICTION_TEX_COORDS_PORTABLE
-//   weighted         MESH_PREDICTION_TEX_COORDS_WEIGHTED (draco-uv)
+//   weighted         MESH_PREDICTION_TEX_COORDS_WEIGHTED (draco-uv), decodes
+//                    as fast as stock Draco
+//   weighted_multi   MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI: weighted
+//                    with every stencil; smaller, slower to decode
 //   laplacian_tutte, laplacian_cotan, laplacian_mv
 //                    MESH_PREDICTION_TEX_COORDS_LAPLACIAN (draco-uv, lossy:
 //                    see uv_laplacian_options.h)
-//   auto             per attribute, the smallest of the lossless ones above
+//   auto             per attribute, the smallest of the lossless schemes
+//                    above that decode as fast as stock (all but
+//                    weighted_multi and the Laplacians)
 #ifndef DRACO_EXT_UV_PREDICTION_OPTIONS_H_
 #define DRACO_EXT_UV_PREDICTION_OPTIONS_H_
 
@@ -62,6 +67,13 @@ bool IsAutoUvPrediction(const std::string &name);
 // The -uv_pred name of |method| as a UV prediction ("draco" for
 // PREDICTION_UNDEFINED, or the numeric id for methods without a name).
 std::string UvPredictionNameOf(PredictionSchemeMethod method);
+
+// True for the methods that predict from quantized positions.
+bool UvPredictionNeedsQuantizedPositions(PredictionSchemeMethod method);
+
+// True for the prediction scheme ids that stock Draco does not define (all
+// of draco-uv's): a file using one needs a decoder with draco-uv.
+bool IsDracoUvPredictionMethod(PredictionSchemeMethod method);
 
 // Applies -uv_pred |name| to every TEX_COORD attribute of |mesh| on
 // |encoder|, whose options must already be set. An empty name or "draco"

@@ -35,7 +35,8 @@ namespace draco {
 // and the transform data, then rebuilds every entry in the encoder's order
 // from the same integer predictions.
 //
-// Treats its input as hostile: a wrong guard, version or configuration,
+// Treats its input as hostile: a wrong guard, version or configuration (a
+// multi-stencil configuration under MESH_PREDICTION_TEX_COORDS_WEIGHTED too),
 // non-zero Draco corrections, inconsistent stream counts, exhausted streams
 // or anything but 2 components fail; out-of-range values only weaken the
 // prediction (uv_stencil_geometry.h bounds every product).
@@ -45,11 +46,14 @@ class MeshPredictionSchemeTexCoordsWeightedDecoder
  public:
   using CorrType = typename MeshPredictionSchemeDecoder<DataTypeT, TransformT,
                                                         MeshDataT>::CorrType;
-  MeshPredictionSchemeTexCoordsWeightedDecoder(const PointAttribute *attribute,
-                                               const TransformT &transform,
-                                               const MeshDataT &mesh_data)
+  // |method| is MESH_PREDICTION_TEX_COORDS_WEIGHTED or its _MULTI variant.
+  MeshPredictionSchemeTexCoordsWeightedDecoder(
+      const PointAttribute *attribute, const TransformT &transform,
+      const MeshDataT &mesh_data,
+      PredictionSchemeMethod method = MESH_PREDICTION_TEX_COORDS_WEIGHTED)
       : MeshPredictionSchemeDecoder<DataTypeT, TransformT, MeshDataT>(
-            attribute, transform, mesh_data) {}
+            attribute, transform, mesh_data),
+        method_(method) {}
 
   bool ComputeOriginalValues(const CorrType *in_corr, DataTypeT *out_data,
                              int size, int num_components,
@@ -58,7 +62,7 @@ class MeshPredictionSchemeTexCoordsWeightedDecoder
   bool DecodePredictionData(DecoderBuffer *buffer) override;
 
   PredictionSchemeMethod GetPredictionMethod() const override {
-    return MESH_PREDICTION_TEX_COORDS_WEIGHTED;
+    return method_;
   }
 
   bool IsInitialized() const override {
@@ -86,6 +90,7 @@ class MeshPredictionSchemeTexCoordsWeightedDecoder
     return static_cast<int>(this->mesh_data().data_to_corner_map()->size());
   }
 
+  const PredictionSchemeMethod method_;
   MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT> predictor_;
   UvResidualDecoder residuals_;
   UvPredictionConfig config_;
@@ -132,6 +137,7 @@ bool MeshPredictionSchemeTexCoordsWeightedDecoder<
   if (!DecodeUvBitstreamGuard(buffer) || !buffer->Decode(&version) ||
       version != kTexCoordsWeightedFormatVersion ||
       !buffer->Decode(&config) || !config_.FromByte(config) ||
+      !IsAllowedUvConfig(method_, config_) ||
       !residuals_.Decode(NumEntries() * kUvNumComponents, buffer)) {
     return false;
   }

@@ -54,11 +54,14 @@ class MeshPredictionSchemeTexCoordsWeightedEncoder
  public:
   using CorrType = typename MeshPredictionSchemeEncoder<DataTypeT, TransformT,
                                                         MeshDataT>::CorrType;
-  MeshPredictionSchemeTexCoordsWeightedEncoder(const PointAttribute *attribute,
-                                               const TransformT &transform,
-                                               const MeshDataT &mesh_data)
+  // |method| is MESH_PREDICTION_TEX_COORDS_WEIGHTED or its _MULTI variant.
+  MeshPredictionSchemeTexCoordsWeightedEncoder(
+      const PointAttribute *attribute, const TransformT &transform,
+      const MeshDataT &mesh_data,
+      PredictionSchemeMethod method = MESH_PREDICTION_TEX_COORDS_WEIGHTED)
       : MeshPredictionSchemeEncoder<DataTypeT, TransformT, MeshDataT>(
-            attribute, transform, mesh_data) {}
+            attribute, transform, mesh_data),
+        method_(method) {}
 
   bool ComputeCorrectionValues(
       const DataTypeT *in_data, CorrType *out_corr, int size,
@@ -67,7 +70,7 @@ class MeshPredictionSchemeTexCoordsWeightedEncoder
   bool EncodePredictionData(EncoderBuffer *buffer) override;
 
   PredictionSchemeMethod GetPredictionMethod() const override {
-    return MESH_PREDICTION_TEX_COORDS_WEIGHTED;
+    return method_;
   }
 
   bool IsInitialized() const override {
@@ -96,19 +99,19 @@ class MeshPredictionSchemeTexCoordsWeightedEncoder
   // Keeps the residual streams of the last pass if they are the smallest.
   bool KeepIfSmaller(const UvPredictionConfig &config);
 
-  // Every configuration the encoder tries.
-  static std::vector<UvPredictionConfig> CandidateConfigs() {
+  // Every configuration the encoder tries for |method_|.
+  std::vector<UvPredictionConfig> CandidateConfigs() const {
     std::vector<UvPredictionConfig> configs;
-    for (const bool max_degree_order : {true, false}) {
-      for (const UvPredictorKind kind :
-           {UvPredictorKind::kAdaptive, UvPredictorKind::kAgreementWeighted}) {
-        configs.push_back({max_degree_order, kind, true});
+    for (uint8_t byte = 0; byte <= kMaxUvPredictionConfigByte; ++byte) {
+      UvPredictionConfig config;
+      if (config.FromByte(byte) && IsAllowedUvConfig(method_, config)) {
+        configs.push_back(config);
       }
     }
-    configs.push_back({false, UvPredictorKind::kReachStencil, true});
     return configs;
   }
 
+  const PredictionSchemeMethod method_;
   MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT> predictor_;
   UvResidualEncoder residuals_;
   UvPredictionConfig config_;

@@ -29,6 +29,7 @@
 
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <limits>
 #include <tuple>
 #include <vector>
@@ -49,19 +50,21 @@ namespace draco {
 // from the quantised 3D positions of all vertices.
 //
 // Stencils: the faces whose tip (last processed vertex) is O, all of them or
-// (kReachStencil) the one through which Draco's traversal reaches O; the
+// (kReach*) the one through which Draco's traversal reaches O; the
 // other two UV vertices L and R are known. Each stencil gives
 //   c  the weighted parallelogram of eq. (3)-(4) when B, the vertex across
 //      LR, is known (exact for locally affine parameterisations), else s;
 //   s  the similarity (conformal) rule; its side of LR comes from B, else
-//      from the majority orientation of the faces known so far, so no
+//      from the opposite vertices of the last step that had any, so no
 //      orientation bit is sent;
 //   a  the parallelogram vL + vR - vB when B is known.
 // Candidates combine all stencils: mean of c and s, mean of c, mean of s,
 // mean of a, and the agreement-weighted mean of (c + s) / 2
-// (UvAgreementWeight()). kAdaptive picks, per vertex, the candidate with the
-// smallest summed errors at the known neighbours; kAgreementWeighted always
-// takes the last one; kReachStencil the mean of c and s.
+// (UvAgreementWeight()). kAdaptive and kReachAdaptive pick, per vertex, the
+// candidate with the smallest recent errors (a sum over all vertices so far
+// that decays by 15/16 per vertex; it beat the errors at the vertex's own
+// neighbours on 6 of 7 test meshes, and costs no per-vertex memory);
+// kAgreementWeighted always takes the last one, kReachMean the first.
 //
 // Also provides the residual context: the bit length (capped at 7) of the
 // neighbours' mean residual magnitude, 8 without known neighbours.
@@ -137,11 +140,18 @@ class MeshPredictionSchemeTexCoordsWeightedPredictor {
     return cross > 0 ? 1 : (cross < 0 ? -1 : 0);
   }
 
+  bool IsAdaptive() const {
+    return kind_ == UvPredictorKind::kAdaptive ||
+           kind_ == UvPredictorKind::kReachAdaptive;
+  }
   void CachePositions();
+  // Sets positions_ from |value|(entry, component), shifted as documented.
+  template <class ValueT>
+  void ShiftPositions(ValueT value);
   void SelectStencils(const Stencil *stencils, int num_stencils);
-  int OrientationFor(const Stencil &stencil, const DataTypeT *data) const;
+  int OrientationFor(const Uv &f, const Uv &g, bool has_b);
   void PredictStencil(const Stencil &stencil, int32_t tip,
-                      const DataTypeT *data, Uv *affine, Uv *similarity) const;
+                      const DataTypeT *data, Uv *affine, Uv *similarity);
   void ComputeCandidates(int32_t tip, const DataTypeT *data);
   void ComputeFallback(int step, const DataTypeT *data);
   int ChooseCandidate() const;
@@ -155,12 +165,14 @@ class MeshPredictionSchemeTexCoordsWeightedPredictor {
 
   // Positions by entry, minus each component's minimum, below 2^30.
   std::vector<Pos> positions_;
-  // Per entry: |correction| summed over both components (saturated), and
-  // per candidate the summed |prediction error| (kAdaptive only).
+  // Per entry: |correction| summed over both components (saturated).
   std::vector<uint32_t> magnitude_;
-  std::vector<std::array<uint32_t, kNumCandidates>> candidate_error_;
-  int64_t positive_faces_ = 0;
-  int64_t negative_faces_ = 0;
+  // Per candidate: the recent prediction errors, decaying (adaptive kinds).
+  std::array<int64_t, kNumCandidates> recent_error_ = {};
+  // Orientation the opposite vertices of the last step that had any gave
+  // (+1 before any), and the sum of the current step's.
+  int last_orientation_ = 1;
+  int step_orientation_sum_ = 0;
 
   // State of the current step.
   const Stencil *stencils_ = nullptr;
@@ -176,30 +188,52 @@ class MeshPredictionSchemeTexCoordsWeightedPredictor {
 template <typename DataTypeT>
 void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::
     CachePositions() {
+  positions_.resize(num_entries_);
+  if (pos_attribute_->data_type() == DT_INT32) {
+    // Decoding: one copy of Draco's portable positions, shifted in place.
+    for (int entry = 0; entry < num_entries_; ++entry) {
+      std::memcpy(positions_[entry].data(),
+                  pos_attribute_->GetAddress(pos_attribute_->mapped_index(
+                      entry_to_point_id_map_[entry])),
+                  sizeof(Pos));
+    }
+    ShiftPositions(
+        [&](int entry, int i) { return int64_t{positions_[entry][i]}; });
+    return;
+  }
   std::vector<std::array<int64_t, 3>> values(num_entries_);
-  std::array<int64_t, 3> min_value;
-  min_value.fill(std::numeric_limits<int64_t>::max());
-  int64_t max_value = std::numeric_limits<int64_t>::lowest();
   for (int entry = 0; entry < num_entries_; ++entry) {
-    const PointIndex point = entry_to_point_id_map_[entry];
-    pos_attribute_->ConvertValue(pos_attribute_->mapped_index(point), 3,
-                                 values[entry].data());
+    pos_attribute_->ConvertValue(
+        pos_attribute_->mapped_index(entry_to_point_id_map_[entry]), 3,
+        values[entry].data());
+  }
+  ShiftPositions([&](int entry, int i) { return values[entry][i]; });
+}
+
+template <typename DataTypeT>
+template <class ValueT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::ShiftPositions(
+    ValueT value) {
+  // Each component minus its minimum; integer attributes of any width fit
+  // once shifted below 2^30.
+  int64_t min_value[3], max_value[3];
+  std::fill(min_value, min_value + 3, std::numeric_limits<int64_t>::max());
+  std::fill(max_value, max_value + 3, std::numeric_limits<int64_t>::lowest());
+  for (int entry = 0; entry < num_entries_; ++entry) {
     for (int i = 0; i < 3; ++i) {
-      min_value[i] = std::min(min_value[i], values[entry][i]);
-      max_value = std::max(max_value, values[entry][i]);
+      min_value[i] = std::min(min_value[i], value(entry, i));
+      max_value[i] = std::max(max_value[i], value(entry, i));
     }
   }
-  // Integer attributes of any width fit once shifted below 2^30.
-  int64_t range = 0;
+  uint64_t range = 0;
   for (int i = 0; i < 3 && num_entries_ > 0; ++i) {
-    range = std::max(range, max_value - min_value[i]);
+    range = std::max(range, static_cast<uint64_t>(max_value[i] - min_value[i]));
   }
-  const int shift = std::max(0, BitLength(static_cast<uint64_t>(range)) - 30);
-  positions_.resize(num_entries_);
+  const int shift = std::max(0, BitLength(range) - 30);
   for (int entry = 0; entry < num_entries_; ++entry) {
     for (int i = 0; i < 3; ++i) {
       positions_[entry][i] =
-          static_cast<int32_t>((values[entry][i] - min_value[i]) >> shift);
+          static_cast<int32_t>((value(entry, i) - min_value[i]) >> shift);
     }
   }
 }
@@ -212,11 +246,9 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::Start(
   num_entries_ = static_cast<int>(order.rank.size());
   CachePositions();
   magnitude_.assign(num_entries_, 0);
-  if (kind_ == UvPredictorKind::kAdaptive) {
-    candidate_error_.assign(num_entries_, {});
-  }
-  positive_faces_ = 0;
-  negative_faces_ = 0;
+  recent_error_.fill(0);
+  last_orientation_ = 1;
+  step_orientation_sum_ = 0;
 }
 
 template <typename DataTypeT>
@@ -247,31 +279,35 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::SelectStencils(
 
 template <typename DataTypeT>
 int MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::OrientationFor(
-    const Stencil &stencil, const DataTypeT *data) const {
+    const Uv &f, const Uv &g, bool has_b) {
   // Face (O, L, R) has the orientation of face (B, R, L) across LR, whose
-  // UV area has the sign of -cross(vR - vL, vB - vL).
-  if (stencil.b != UvCornerGraph::kNone) {
-    const Uv uv_l = UvOf(data, stencil.l);
-    const int sign = SignOfCross(UvOf(data, stencil.r) - uv_l,
-                                 UvOf(data, stencil.b) - uv_l);
-    if (sign != 0) {
-      return -sign;
+  // UV area has the sign of -cross(f, g), f = vR - vL, g = vB - vL. Without
+  // B, the orientation the opposite vertices of earlier steps gave. (Within
+  // a step the stencils' order differs between encoder and decoder, so a
+  // step only accumulates and Update() takes the sign of the sum.)
+  if (has_b) {
+    const int64_t cross = f[0] * g[1] - f[1] * g[0];
+    if (cross != 0) {
+      const int orientation = cross > 0 ? -1 : 1;
+      step_orientation_sum_ += orientation;
+      return orientation;
     }
   }
-  return negative_faces_ > positive_faces_ ? -1 : 1;
+  return last_orientation_;
 }
 
 template <typename DataTypeT>
 void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::PredictStencil(
     const Stencil &stencil, int32_t tip, const DataTypeT *data, Uv *affine,
-    Uv *similarity) const {
+    Uv *similarity) {
   const Uv uv_l = UvOf(data, stencil.l);
   const Uv uv_r = UvOf(data, stencil.r);
   const bool has_b = stencil.b != UvCornerGraph::kNone;
-  const Uv uv_b = has_b ? UvOf(data, stencil.b) : uv_l;
+  const Uv f = uv_r - uv_l;
+  const Uv g = has_b ? UvOf(data, stencil.b) - uv_l : Uv(0, 0);
   UvStencilFrame frame;
-  if (!IsSupportedUvDifference(uv_r - uv_l) ||
-      !IsSupportedUvDifference(uv_b - uv_l) ||
+  // Checking f and g first also bounds the cross product above below 2^41.
+  if (!IsSupportedUvDifference(f) || !IsSupportedUvDifference(g) ||
       !ComputeUvStencilFrame(PositionOf(stencil.l), PositionOf(stencil.r),
                              PositionOf(tip),
                              PositionOf(has_b ? stencil.b : stencil.l), has_b,
@@ -279,16 +315,20 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::PredictStencil(
     *similarity = *affine = PredictMidpointQ16(uv_l, uv_r);
     return;
   }
-  *similarity = ClampPredictionQ16(PredictSimilarityQ16(
-      frame, uv_l, uv_r, OrientationFor(stencil, data)));
+  *similarity = ClampPredictionQ16(
+      PredictSimilarityQ16(frame, uv_l, f, OrientationFor(f, g, has_b)));
   *affine = frame.has_opposite
-                ? ClampPredictionQ16(PredictAffineQ16(frame, uv_l, uv_r, uv_b))
+                ? ClampPredictionQ16(PredictAffineQ16(frame, uv_l, f, g))
                 : *similarity;
 }
 
 template <typename DataTypeT>
 void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::
     ComputeCandidates(int32_t tip, const DataTypeT *data) {
+  // The adaptive kinds need every candidate (for the errors they learn
+  // from); the agreement weight needs several stencils to matter.
+  const bool all_candidates = IsAdaptive();
+  const bool agreement = !UsesReachStencil(kind_);
   Uv affine_sum(0, 0), similarity_sum(0, 0), parallelogram_sum(0, 0);
   Uv agreement_sum(0, 0);
   int64_t weight_sum = 0;
@@ -299,26 +339,31 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::
     PredictStencil(stencil, tip, data, &affine, &similarity);
     affine_sum = affine_sum + affine;
     similarity_sum = similarity_sum + similarity;
-    if (stencil.b != UvCornerGraph::kNone) {
+    if (all_candidates && stencil.b != UvCornerGraph::kNone) {
       parallelogram_sum =
           parallelogram_sum +
           PredictParallelogramQ16(UvOf(data, stencil.l), UvOf(data, stencil.r),
                                   UvOf(data, stencil.b));
       ++num_parallelograms;
     }
-    const int64_t weight = UvAgreementWeight(affine, similarity);
-    weight_sum += weight;
-    agreement_sum = agreement_sum + (affine + similarity) / 2 * weight;
+    if (agreement) {
+      const int64_t weight = UvAgreementWeight(affine, similarity);
+      weight_sum += weight;
+      agreement_sum = agreement_sum + (affine + similarity) / 2 * weight;
+    }
   }
-  candidates_[kAffineMean] = UvMeanOfQ16(affine_sum, num_stencils_);
-  candidates_[kSimilarityMean] = UvMeanOfQ16(similarity_sum, num_stencils_);
   candidates_[kMeanOfBoth] =
       UvMeanOfQ16(affine_sum + similarity_sum, 2 * num_stencils_);
   candidates_[kAgreement] =
-      weight_sum > 0
+      agreement && weight_sum > 0
           ? Uv(RoundedDivide(agreement_sum[0], weight_sum * kUvStencilOne),
                RoundedDivide(agreement_sum[1], weight_sum * kUvStencilOne))
           : candidates_[kMeanOfBoth];
+  if (!all_candidates) {
+    return;
+  }
+  candidates_[kAffineMean] = UvMeanOfQ16(affine_sum, num_stencils_);
+  candidates_[kSimilarityMean] = UvMeanOfQ16(similarity_sum, num_stencils_);
   candidates_[kParallelogramMean] =
       num_parallelograms > 0 ? UvMeanOfQ16(parallelogram_sum, num_parallelograms)
                              : candidates_[kMeanOfBoth];
@@ -347,20 +392,12 @@ int MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::ChooseCandidate()
   if (kind_ == UvPredictorKind::kAgreementWeighted) {
     return kAgreement;
   }
-  if (kind_ == UvPredictorKind::kReachStencil) {
+  if (kind_ == UvPredictorKind::kReachMean) {
     return kMeanOfBoth;
-  }
-  // Errors are capped at 2^21 per entry: sums cannot overflow int64.
-  std::array<int64_t, kNumCandidates> errors = {};
-  for (int i = 0; i < num_neighbours_; ++i) {
-    const auto &error = candidate_error_[neighbours_[i]];
-    for (int k = 0; k < kNumCandidates; ++k) {
-      errors[k] += error[k];
-    }
   }
   int best = kMeanOfBoth;
   for (int k = 1; k < kNumCandidates; ++k) {
-    if (errors[k] < errors[best]) {
+    if (recent_error_[k] < recent_error_[best]) {
       best = k;
     }
   }
@@ -411,51 +448,48 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::Update(
   constexpr uint64_t kMaxError = uint64_t{1} << 20;
   const int32_t tip = order_->entries[step];
   const Uv value = UvOf(data, tip);
+  if (step_orientation_sum_ != 0) {
+    last_orientation_ = step_orientation_sum_ > 0 ? 1 : -1;
+    step_orientation_sum_ = 0;
+  }
   magnitude_[tip] = static_cast<uint32_t>(
       std::min<uint64_t>(std::numeric_limits<uint32_t>::max(),
                          AbsAsUnsigned(correction[0]) +
                              AbsAsUnsigned(correction[1])));
-  if (kind_ == UvPredictorKind::kAdaptive) {
+  if (IsAdaptive()) {
+    // Exponentially decaying error sums (weight 15/16 per step): below
+    // 16 * 2^21.
     for (int k = 0; k < kNumCandidates; ++k) {
       const Uv error = value - candidates_[k];
-      candidate_error_[tip][k] =
-          static_cast<uint32_t>(std::min(AbsAsUnsigned(error[0]), kMaxError) +
-                                std::min(AbsAsUnsigned(error[1]), kMaxError));
+      recent_error_[k] += std::min(AbsAsUnsigned(error[0]), kMaxError) +
+                          std::min(AbsAsUnsigned(error[1]), kMaxError) -
+                          recent_error_[k] / 16;
     }
-  }
-  // The stencil faces are the faces this entry completes.
-  for (int i = 0; i < num_stencils_; ++i) {
-    const int sign = SignOfCross(UvOf(data, stencils_[i].l) - value,
-                                 UvOf(data, stencils_[i].r) - value);
-    positive_faces_ += sign > 0;
-    negative_faces_ += sign < 0;
   }
 }
 
 namespace uv_prediction_internal {
 
-// The stencil of the face through which Draco's traversal reached entry
-// |p| (Draco's order: the known entries are those below |p|) and the known
-// vertices of that face and of B as neighbours. Returns the number of
-// stencils, 0 or 1.
+// The stencil of the face of |corner| if its other two vertices are known
+// (entries below |p|, Draco's order), with B if known too, and those known
+// vertices as neighbours (up to 3). Returns the number of stencils, 0 or 1.
 template <class MeshDataT>
-int ReachStencil(const MeshDataT &mesh_data, int p,
-                 UvStencilPlan::Stencil *stencil, int32_t *neighbours,
-                 int *num_neighbours) {
+int StencilOfCorner(const MeshDataT &mesh_data, int p, CornerIndex corner,
+                    UvStencilPlan::Stencil *stencil, int32_t *neighbours,
+                    int *num_neighbours) {
   const auto &table = *mesh_data.corner_table();
   const auto &vertex_to_entry = *mesh_data.vertex_to_data_map();
-  const auto known_entry = [&](CornerIndex corner) -> int32_t {
-    if (corner == kInvalidCornerIndex) {
+  const auto known_entry = [&](CornerIndex c) -> int32_t {
+    if (c == kInvalidCornerIndex) {
       return UvCornerGraph::kNone;
     }
-    const VertexIndex v = table.Vertex(corner);
+    const VertexIndex v = table.Vertex(c);
     if (v == kInvalidVertexIndex || v.value() >= vertex_to_entry.size()) {
       return UvCornerGraph::kNone;
     }
     const int32_t entry = vertex_to_entry[v.value()];
     return entry >= 0 && entry < p ? entry : UvCornerGraph::kNone;
   };
-  const CornerIndex corner = (*mesh_data.data_to_corner_map())[p];
   const int32_t l = known_entry(table.Next(corner));
   const int32_t r = known_entry(table.Previous(corner));
   const int32_t b = known_entry(table.Opposite(corner));
@@ -467,6 +501,47 @@ int ReachStencil(const MeshDataT &mesh_data, int p,
   }
   *stencil = {l, r, b};
   return l != UvCornerGraph::kNone && r != UvCornerGraph::kNone && l != r;
+}
+
+// The stencil of the face through which Draco's traversal reached entry
+// |p|. When that face has none (Draco's traversal never crosses its start
+// face's third edge, so it may restart a chart next to known vertices), the
+// first face around the vertex that has one, swinging left then right;
+// without any, the known vertices of the reach face.
+template <class MeshDataT>
+int ReachStencil(const MeshDataT &mesh_data, int p,
+                 UvStencilPlan::Stencil *stencil, int32_t *neighbours,
+                 int *num_neighbours) {
+  const auto &table = *mesh_data.corner_table();
+  const CornerIndex reach = (*mesh_data.data_to_corner_map())[p];
+  if (StencilOfCorner(mesh_data, p, reach, stencil, neighbours,
+                      num_neighbours)) {
+    return 1;
+  }
+  UvStencilPlan::Stencil other;
+  int32_t other_neighbours[3];
+  int num_other_neighbours;
+  CornerIndex corner = table.SwingLeft(reach);
+  bool swinging_left = true;
+  for (int steps = 0; steps < table.num_corners() && corner != reach; ++steps) {
+    if (corner == kInvalidCornerIndex) {
+      if (!swinging_left) {
+        break;
+      }
+      swinging_left = false;
+      corner = table.SwingRight(reach);
+      continue;
+    }
+    if (StencilOfCorner(mesh_data, p, corner, &other, other_neighbours,
+                        &num_other_neighbours)) {
+      *stencil = other;
+      std::copy(other_neighbours, other_neighbours + 3, neighbours);
+      *num_neighbours = num_other_neighbours;
+      return 1;
+    }
+    corner = swinging_left ? table.SwingLeft(corner) : table.SwingRight(corner);
+  }
+  return 0;
 }
 
 }  // namespace uv_prediction_internal
@@ -484,7 +559,7 @@ bool RunUvPrediction(
     ProcessT process) {
   const auto &data_to_corner = *mesh_data.data_to_corner_map();
   UvProcessingOrder order;
-  if (config.kind == UvPredictorKind::kReachStencil) {
+  if (UsesReachStencil(config.kind)) {
     BuildDataOrder(data_to_corner, &order);
     predictor->Start(config.kind, order);
     UvStencilPlan::Stencil stencil;

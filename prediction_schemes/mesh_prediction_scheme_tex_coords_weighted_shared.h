@@ -21,6 +21,7 @@
 #include <cstdint>
 
 #include "draco/attributes/point_attribute.h"
+#include "draco/compression/config/compression_shared.h"
 #include "prediction_schemes/uv_stencil_geometry.h"
 
 namespace draco {
@@ -41,9 +42,18 @@ enum class UvPredictorKind : uint8_t {
   // Only the stencil of the face through which Draco's traversal reaches
   // the vertex, as Draco's own texture coordinate predictors do: about half
   // the arithmetic of the others, for stock decoding speed. Needs Draco's
-  // entry order.
-  kReachStencil = 2,
+  // entry order. Per vertex, the candidate with the smallest errors at the
+  // reach face's known vertices.
+  kReachAdaptive = 2,
+  // The reach stencil; the mean of its weighted parallelogram and its
+  // similarity prediction.
+  kReachMean = 3,
 };
+
+inline bool UsesReachStencil(UvPredictorKind kind) {
+  return kind == UvPredictorKind::kReachAdaptive ||
+         kind == UvPredictorKind::kReachMean;
+}
 
 // Per-attribute choices the encoder makes and the decoder reads.
 struct UvPredictionConfig {
@@ -59,10 +69,22 @@ struct UvPredictionConfig {
   bool FromByte(uint8_t byte) {
     max_degree_order = (byte & 1) != 0;
     kind = static_cast<UvPredictorKind>(byte >> 1);
-    return byte >> 1 <= static_cast<uint8_t>(UvPredictorKind::kReachStencil) &&
-           !(max_degree_order && kind == UvPredictorKind::kReachStencil);
+    return byte >> 1 <= static_cast<uint8_t>(UvPredictorKind::kReachMean) &&
+           !(max_degree_order && UsesReachStencil(kind));
   }
 };
+
+// Largest valid UvPredictionConfig byte.
+constexpr uint8_t kMaxUvPredictionConfigByte = 6;
+
+// MESH_PREDICTION_TEX_COORDS_WEIGHTED promises stock decoding speed, so it
+// only uses the reach stencil; its _MULTI variant may use every
+// configuration.
+inline bool IsAllowedUvConfig(PredictionSchemeMethod method,
+                              const UvPredictionConfig &config) {
+  return method == MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI ||
+         UsesReachStencil(config.kind);
+}
 
 // The parent attribute must be the integer (quantised) 3D position.
 inline bool IsSupportedUvPositionAttribute(const PointAttribute *att) {

@@ -99,18 +99,26 @@ struct EdgeVectors {
               const UvStencilPos &o, const UvStencilPos &bp) {
     uint64_t spread = 0;
     for (int i = 0; i < 3; ++i) {
-      spread |= AbsAsUnsigned(int64_t{r[i]} - l[i]) |
-                AbsAsUnsigned(int64_t{o[i]} - l[i]) |
-                AbsAsUnsigned(int64_t{bp[i]} - l[i]);
+      e[i] = int64_t{r[i]} - l[i];
+      d[i] = int64_t{o[i]} - l[i];
+      b[i] = int64_t{bp[i]} - l[i];
+      spread |= AbsAsUnsigned(e[i]) | AbsAsUnsigned(d[i]) | AbsAsUnsigned(b[i]);
     }
     const int excess = BitLength(spread) - kUvStencilPositionBits;
-    const int down = excess > 0 ? excess : 0;
-    const int64_t up = int64_t{1} << (excess < 0 ? -excess : 0);
-    for (int i = 0; i < 3; ++i) {
-      const int64_t base = l[i] >> down;
-      e[i] = ((r[i] >> down) - base) * up;
-      d[i] = ((o[i] >> down) - base) * up;
-      b[i] = ((bp[i] >> down) - base) * up;
+    if (excess > 0) {
+      for (int i = 0; i < 3; ++i) {
+        const int64_t base = l[i] >> excess;
+        e[i] = (r[i] >> excess) - base;
+        d[i] = (o[i] >> excess) - base;
+        b[i] = (bp[i] >> excess) - base;
+      }
+    } else {
+      const int64_t up = int64_t{1} << -excess;
+      for (int i = 0; i < 3; ++i) {
+        e[i] *= up;
+        d[i] *= up;
+        b[i] *= up;
+      }
     }
   }
 };
@@ -189,12 +197,11 @@ inline bool ComputeUvStencilFrame(const UvStencilPos &l, const UvStencilPos &r,
 //   v'O = vL + s (vR - vL) - (h / hb) ((vB - vL) - sb (vR - vL)).
 // Exact for every affine parameterisation of a flat region. Requires
 // |frame.has_opposite|. Returns Q16 texture coordinates.
+// |f| = vR - vL and |g| = vB - vL.
 inline UvStencilUv PredictAffineQ16(const UvStencilFrame &frame,
                                     const UvStencilUv &uv_l,
-                                    const UvStencilUv &uv_r,
-                                    const UvStencilUv &uv_b) {
-  const UvStencilUv f = uv_r - uv_l;
-  const UvStencilUv g = uv_b - uv_l;
+                                    const UvStencilUv &f,
+                                    const UvStencilUv &g) {
   UvStencilUv prediction;
   for (int i = 0; i < 2; ++i) {
     // |f|, |g| < 2^20 and coefficients <= 2^24 (Q16 of 256.0):
@@ -214,11 +221,11 @@ inline UvStencilUv PredictAffineQ16(const UvStencilFrame &frame,
 // |orientation| is the sign of the UV triangle (O, L, R)'s signed area,
 // which for an orientation preserving chart is that of its neighbours.
 // Returns Q16 texture coordinates.
+// |f| = vR - vL.
 inline UvStencilUv PredictSimilarityQ16(const UvStencilFrame &frame,
                                         const UvStencilUv &uv_l,
-                                        const UvStencilUv &uv_r,
+                                        const UvStencilUv &f,
                                         int orientation) {
-  const UvStencilUv f = uv_r - uv_l;
   const UvStencilUv rot_f(-f[1], f[0]);
   const int64_t h = orientation > 0 ? frame.h : -frame.h;
   UvStencilUv prediction;
@@ -244,6 +251,9 @@ inline UvStencilUv PredictMidpointQ16(const UvStencilUv &uv_l,
 // The mean of |count| (<= 32) Q16 predictions summed in |sum|, rounded to
 // texture units.
 inline UvStencilUv UvMeanOfQ16(const UvStencilUv &sum, int count) {
+  if (count == 1) {
+    return UvStencilUv(RoundedShift(sum[0], 16), RoundedShift(sum[1], 16));
+  }
   return UvStencilUv(
       RoundedShift(DivideBySmallCount(sum[0], count), 16),
       RoundedShift(DivideBySmallCount(sum[1], count), 16));

@@ -22,8 +22,9 @@ status=0
 for rev in "${revisions[@]}"; do
   tree="${work}/${rev//\//_}"
   mkdir -p "${tree}"
-  git --git-dir="${git_dir}" archive "${rev}" CMakeLists.txt cmake src |
-    tar -x -C "${tree}"
+  # A partial mirror may lack unrelated blobs; git archive warns about them.
+  git --git-dir="${git_dir}" archive "${rev}" CMakeLists.txt cmake src \
+    2>"${work}/archive.log" | tar -x -C "${tree}"
   git -C "${tree}" init -q
   described=$(git --git-dir="${git_dir}" describe --tags "${rev}" 2>/dev/null || echo "${rev}")
   for patch in "${patches_dir}"/*.patch; do

@@ -71,6 +71,16 @@ TEST_F(UvPredictionConfigureTest, RejectsUnquantizedTexCoords) {
   EXPECT_FALSE(EncodeMeshToBytes(*mesh_, {14, 0, 10, "weighted"}).ok());
 }
 
+TEST_F(UvPredictionConfigureTest, RejectsQuantizationBeyondTheSupportedRange) {
+  const auto result = EncodeMeshToBytes(*mesh_, {14, 21, 10, "weighted"});
+  ASSERT_FALSE(result.ok());
+  EXPECT_NE(result.status().error_msg_string().find("-qt up to 20"),
+            std::string::npos);
+  EXPECT_TRUE(EncodeMeshToBytes(*mesh_, {14, 20, 10, "weighted"}).ok());
+  // auto simply leaves the scheme out.
+  EXPECT_TRUE(EncodeMeshToBytes(*mesh_, {14, 21, 10, "auto"}).ok());
+}
+
 TEST_F(UvPredictionConfigureTest, RejectsPointClouds) {
   ExpertEncoder encoder(*mesh_);
   EXPECT_FALSE(ConfigureUvPrediction("weighted", nullptr, &encoder).ok());

@@ -218,8 +218,8 @@ TEST(MeshPredictionSchemeTexCoordsWeightedTest,
   WeightedPredictionHarness harness(*mesh);
   for (const UvPredictorKind kind :
        {UvPredictorKind::kAdaptive, UvPredictorKind::kAgreementWeighted,
-        UvPredictorKind::kReachStencil}) {
-    const bool max_degree_order = kind != UvPredictorKind::kReachStencil;
+        UvPredictorKind::kReachAdaptive, UvPredictorKind::kReachMean}) {
+    const bool max_degree_order = !UsesReachStencil(kind);
     EXPECT_LE(CountNonZero(harness.Residuals({max_degree_order, kind, true})),
               4)
         << static_cast<int>(kind);
@@ -245,9 +245,10 @@ struct RoundTripCase {
   int qp;
   int qt;
   int cl;
+  const char *scheme;
 };
 
-// Decodes |mesh| encoded with -uv_pred weighted and with stock Draco under
+// Decodes |mesh| encoded with -uv_pred |c.scheme| and with stock Draco under
 // the same settings; the texture coordinates (and everything else) must be
 // bit-identical, since both are lossless on the same quantisation grid.
 void ExpectWeightedMatchesStock(const Mesh &mesh, const RoundTripCase &c,
@@ -255,7 +256,7 @@ void ExpectWeightedMatchesStock(const Mesh &mesh, const RoundTripCase &c,
   UvEncodeSettings settings{c.qp, c.qt, c.cl, ""};
   const auto stock = EncodeMeshToBytes(mesh, settings);
   ASSERT_TRUE(stock.ok()) << label << ": " << stock.status().error_msg();
-  settings.uv_pred = "weighted";
+  settings.uv_pred = c.scheme;
   const auto ours = EncodeMeshToBytes(mesh, settings);
   ASSERT_TRUE(ours.ok()) << label << ": " << ours.status().error_msg();
   const auto stock_mesh = DecodeDracoMesh(stock.value());
@@ -281,10 +282,14 @@ TEST(MeshPredictionSchemeTexCoordsWeightedTest, RoundTripsBitExactOnDracoTestdat
   for (const std::string &name : meshes) {
     const auto mesh = ReadTestMesh(DracoTestdataPath(name));
     ASSERT_TRUE(mesh.ok()) << name;
-    for (const RoundTripCase c : {RoundTripCase{11, 8, 10}, {11, 10, 7},
-                                  {14, 12, 10}, {14, 14, 10}, {20, 12, 10}}) {
+    for (const RoundTripCase c :
+         {RoundTripCase{11, 8, 10, "weighted"}, {11, 10, 7, "weighted"},
+          {14, 12, 10, "weighted"}, {14, 14, 10, "weighted"},
+          {20, 12, 10, "weighted"}, {11, 10, 10, "weighted_multi"},
+          {14, 12, 7, "weighted_multi"}}) {
       ExpectWeightedMatchesStock(*mesh.value(), c,
-                                 name + " qp" + std::to_string(c.qp) + " qt" +
+                                 name + " " + c.scheme + " qp" +
+                                     std::to_string(c.qp) + " qt" +
                                      std::to_string(c.qt));
     }
   }
@@ -299,8 +304,11 @@ TEST(MeshPredictionSchemeTexCoordsWeightedTest, RoundTripsBitExactOnCorpus) {
     const auto mesh = ReadTestMesh(path);
     ASSERT_TRUE(mesh.ok()) << path;
     for (const int qt : {8, 10, 12, 14}) {
-      ExpectWeightedMatchesStock(*mesh.value(), {14, qt, 10},
-                                 path + " qt" + std::to_string(qt));
+      for (const char *scheme : {"weighted", "weighted_multi"}) {
+        ExpectWeightedMatchesStock(*mesh.value(), {14, qt, 10, scheme},
+                                   path + " " + scheme + " qt" +
+                                       std::to_string(qt));
+      }
     }
   }
 }

@@ -89,7 +89,7 @@ TEST(UvStencilGeometryTest, AffinePredictionIsExactForAffineMapsOfAPlane) {
       continue;
     }
     ++tested;
-    const Uv predicted = RoundQ16(PredictAffineQ16(frame, uv[0], uv[1], uv[3]));
+    const Uv predicted = RoundQ16(PredictAffineQ16(frame, uv[0], uv[1] - uv[0], uv[3] - uv[0]));
     // The map scales unit steps by up to 60, so Q16 rounding of the frame
     // coefficients may shift the result by one quantum.
     EXPECT_LE(MaxAbsError(predicted, uv[2]), 1) << "trial " << trial;
@@ -108,8 +108,9 @@ TEST(UvStencilGeometryTest, AffinePredictionIsExactAcrossAFold) {
   UvStencilFrame frame;
   ASSERT_TRUE(ComputeUvStencilFrame(l, r, o, b, true, &frame));
   ASSERT_TRUE(frame.has_opposite);
+  const Uv uv_l = map.Apply(0, 0);
   const Uv predicted = RoundQ16(PredictAffineQ16(
-      frame, map.Apply(0, 0), map.Apply(120, 0), map.Apply(40, 90)));
+      frame, uv_l, map.Apply(120, 0) - uv_l, map.Apply(40, 90) - uv_l));
   EXPECT_EQ(predicted, map.Apply(70, -60));
 }
 
@@ -127,8 +128,10 @@ TEST(UvStencilGeometryTest, SimilarityPredictionIsExactForConformalMaps) {
   const Uv uv_l = map.Apply(0, 0), uv_r = map.Apply(100, 0);
   const Uv expected = map.Apply(40, 80);
   // Triangle (O, L, R) in UV has positive area for this map and points.
-  EXPECT_EQ(RoundQ16(PredictSimilarityQ16(frame, uv_l, uv_r, 1)), expected);
-  EXPECT_NE(RoundQ16(PredictSimilarityQ16(frame, uv_l, uv_r, -1)), expected);
+  EXPECT_EQ(RoundQ16(PredictSimilarityQ16(frame, uv_l, uv_r - uv_l, 1)),
+            expected);
+  EXPECT_NE(RoundQ16(PredictSimilarityQ16(frame, uv_l, uv_r - uv_l, -1)),
+            expected);
 }
 
 TEST(UvStencilGeometryTest, RejectsADegenerateEdge) {
@@ -174,10 +177,10 @@ TEST(UvStencilGeometryTest, ExtremeInputsStayWithinTheDocumentedBounds) {
     const Uv uv_l(uv_coord(rng), uv_coord(rng));
     const Uv uv_r(uv_coord(rng), uv_coord(rng));
     const Uv uv_b(uv_coord(rng), uv_coord(rng));
-    const Uv similarity = PredictSimilarityQ16(frame, uv_l, uv_r, 1);
+    const Uv similarity = PredictSimilarityQ16(frame, uv_l, uv_r - uv_l, 1);
     EXPECT_LT(std::abs(similarity[0]), int64_t{1} << 48);
     if (frame.has_opposite) {
-      const Uv affine = PredictAffineQ16(frame, uv_l, uv_r, uv_b);
+      const Uv affine = PredictAffineQ16(frame, uv_l, uv_r - uv_l, uv_b - uv_l);
       EXPECT_LT(std::abs(affine[0]), int64_t{1} << 56);
       EXPECT_LT(std::abs(affine[1]), int64_t{1} << 56);
     }
