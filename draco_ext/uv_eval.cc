@@ -29,6 +29,7 @@
 #include "draco/mesh/mesh_attribute_corner_table.h"
 #include "draco/mesh/mesh_misc_functions.h"
 #include "draco_ext/uv_encode_settings.h"
+#include "draco_ext/uv_laplacian_options.h"
 
 namespace draco {
 
@@ -323,7 +324,7 @@ StatusOr<UvEvalBaseline> MeasureBaseline(const Mesh &mesh, const Mesh &without,
                                          const UvEvalOptions &options,
                                          int qt) {
   UvEvalBaseline baseline;
-  UvEncodeSettings settings{options.qp, 0, options.cl, ""};
+  UvEncodeSettings settings{options.qp, 0, options.cl, "", ""};
   DRACO_ASSIGN_OR_RETURN(baseline.size_without_uvs,
                          EncodedSize(without, settings));
   settings.qt = qt;
@@ -352,9 +353,12 @@ StatusOr<UvEvalRow> MeasureScheme(const std::string &name, const Mesh &mesh,
   row.scheme = scheme;
   row.qt = qt;
   row.uv_vertices = CountUvVertices(mesh);
+  row.lossy = IsUvLaplacianName(scheme);
   TimedEncoding encoding;
   DRACO_RETURN_IF_ERROR(EncodeTimed(
-      mesh, {options.qp, qt, options.cl, scheme == "draco" ? "" : scheme},
+      mesh,
+      {options.qp, qt, options.cl, scheme == "draco" ? "" : scheme,
+       row.lossy ? options.uv_anchors : ""},
       options.repeat, &encoding));
   row.enc_ms = encoding.ms;
   DRACO_ASSIGN_OR_RETURN(const auto decoded,
@@ -365,7 +369,8 @@ StatusOr<UvEvalRow> MeasureScheme(const std::string &name, const Mesh &mesh,
   row.bpv = row.uv_vertices > 0 ? 8.0 * row.uv_bytes / row.uv_vertices : 0.0;
   row.ratio_vs_draco =
       static_cast<double>(row.uv_bytes) / baseline.stock_best_uv_bytes;
-  row.round_trip_ok = CornerUvs(*decoded) == baseline.reference_uvs;
+  row.round_trip_ok =
+      row.lossy || CornerUvs(*decoded) == baseline.reference_uvs;
   DRACO_ASSIGN_OR_RETURN(row.rmse, UvRmse(mesh, *decoded, options.qp));
   row.detail = encoding.summary;
   return row;

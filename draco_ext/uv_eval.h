@@ -36,6 +36,8 @@ struct UvEvalOptions {
                                       "portable", "multi_parallelogram",
                                       "weighted", "auto"};
   int repeat = 3;  // Timings are the minimum over this many runs.
+  // -uv_anchors of the Laplacian schemes; empty means the default.
+  std::string uv_anchors;
 };
 
 // One (mesh, scheme, qt) measurement.
@@ -51,7 +53,10 @@ struct UvEvalRow {
   double enc_ms = 0;
   double dec_ms = 0;        // Decoding the whole mesh.
   double ratio_vs_draco = 0;  // uv_bytes / stock's best of -cl 7 and 10.
-  bool round_trip_ok = false;  // Decoded UVs as expected (bit-exact).
+  bool lossy = false;          // A lossy scheme (the Laplacians).
+  // Decoded UVs as expected: bit-exact for lossless schemes, decoded at all
+  // for lossy ones (their error is |rmse|).
+  bool round_trip_ok = false;
   std::string detail;          // E.g. what "auto" chose.
 };
 

@@ -53,6 +53,9 @@ void Usage() {
       "  --cl N           compression level, default 10\n"
       "  --schemes LIST   -uv_pred names, default "
       "draco,parallelogram,portable,multi_parallelogram,weighted,auto\n"
+      "  --uv_anchors K   -uv_anchors of the laplacian_* schemes (K or "
+      "random:K),\n"
+      "                   default 50 greedy\n"
       "  --repeat N       timing runs (minimum reported), default 3\n"
       "  --csv FILE       one row per (mesh, scheme, qt)\n"
       "  --plot FILE      rate-distortion chart (PNG or SVG, needs python3 "
@@ -113,6 +116,8 @@ bool ParseArgs(int argc, char **argv, Args *args) {
       }
     } else if (flag == "--schemes") {
       args->options.schemes = SplitList(argv[++i]);
+    } else if (flag == "--uv_anchors") {
+      args->options.uv_anchors = argv[++i];
     } else if (flag == "--csv") {
       args->csv = argv[++i];
     } else if (flag == "--plot") {
