@@ -2,14 +2,15 @@
 """Paper-Table-1 comparison from a draco_uv_eval CSV: bits per UV vertex at a
 target RMSE, per mesh and scheme, and which family wins per mesh kind.
 
-    scripts/laplacian_rd_table.py eval.csv CORPUS_DIR [--target 1.5e-3]
+    scripts/laplacian_rd_table.py eval.csv CORPUS_DIR [--target 1.5e-3] [--curves]
 
 The target RMSE is a fraction of each mesh's UV range (the larger extent of u
 and v in its OBJ). A scheme's bpv at the target is interpolated linearly in
 log(RMSE)-log(bpv) between the two qt points that bracket it; a scheme whose
 points do not bracket the target gets no value. Laplacian schemes are the
 `laplacian_*` names; every other scheme counts as a traversal scheme.
-Prints Markdown.
+With --curves, also every mesh's rate-distortion points (bpv / RMSE per qt
+and scheme). Prints Markdown.
 """
 import argparse
 import csv
@@ -55,12 +56,16 @@ def main():
     parser.add_argument('csv')
     parser.add_argument('corpus')
     parser.add_argument('--target', type=float, default=1.5e-3)
+    parser.add_argument('--curves', action='store_true')
     args = parser.parse_args()
     kinds, files = read_manifest(args.corpus)
     points = defaultdict(lambda: defaultdict(list))
+    by_qt = defaultdict(dict)
     for row in csv.DictReader(open(args.csv)):
         points[row['mesh']][row['scheme']].append(
             (float(row['rmse']), float(row['bpv'])))
+        by_qt[(row['mesh'], int(row['qt']))][row['scheme']] = (
+            float(row['bpv']), float(row['rmse']))
     schemes = sorted({s for m in points.values() for s in m},
                      key=lambda s: (s.startswith('laplacian'), s))
     print(f'bpv at RMSE = {args.target:g} x UV range '
@@ -91,6 +96,24 @@ def main():
             0.5 * (ratios[len(ratios) // 2 - 1] + ratios[len(ratios) // 2])
         wins = sum(r < 1 for r in ratios)
         print(f'| {kind} | {len(ratios)} | {wins} | {median:.3f} |')
+    if args.curves:
+        print_curves(points, by_qt, schemes, kinds)
+
+
+def print_curves(points, by_qt, schemes, kinds):
+    print('\nRate-distortion points: bpv / RMSE (UV units) per qt\n')
+    for mesh in sorted(points, key=lambda m: (kinds.get(m, '?'), m)):
+        print(f'{mesh} ({kinds.get(mesh, "?")})\n')
+        print('| qt | ' + ' | '.join(schemes) + ' |')
+        print('|' + ' --- |' * (len(schemes) + 1))
+        for qt in sorted(q for m, q in by_qt if m == mesh):
+            cells = []
+            for s in schemes:
+                value = by_qt[(mesh, qt)].get(s)
+                cells.append('-' if value is None
+                             else f'{value[0]:.2f} / {value[1]:.2e}')
+            print(f'| {qt} | ' + ' | '.join(cells) + ' |')
+        print()
 
 
 if __name__ == '__main__':
