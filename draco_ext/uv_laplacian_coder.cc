@@ -129,7 +129,7 @@ class LaplacianEncoder {
       AppendAnchorValue(a);
     }
     if (!system_.Init(setup_.op(), setup_.charts().anchors,
-                      kUvLaplacianMaxFactorEntries)) {
+                      UvLaplacianMaxFactorEntries(setup_.num_vertices()))) {
       return false;
     }
     residuals_ = Dequantize(q_, step_);
@@ -441,6 +441,14 @@ bool DecodeResiduals(const LaplacianSetup &setup, DecoderBuffer *buffer,
 
 }  // namespace
 
+int64_t UvLaplacianMaxFactorEntries(int num_vertices) {
+  constexpr int64_t kEntriesPerVertex = 1024;
+  constexpr int64_t kMinEntries = int64_t{1} << 20;
+  constexpr int64_t kMaxEntries = int64_t{1} << 28;
+  return std::min(kMaxEntries,
+                  kMinEntries + kEntriesPerVertex * std::max(0, num_vertices));
+}
+
 bool EncodeUvLaplacian(const UvLaplacianMesh &mesh, const UvValues &uv,
                        const UvLaplacianEncoderOptions &options,
                        EncoderBuffer *buffer, UvValues *reconstruction) {
@@ -481,7 +489,7 @@ bool DecodeUvLaplacian(const UvLaplacianMesh &mesh, DecoderBuffer *buffer,
   UvLaplacianSystem system;
   if (!DecodeAnchors(n, buffer, &anchors, &anchor_q) ||
       !DecodeResiduals(setup, buffer, &q) ||
-      !system.Init(setup.op(), anchors, kUvLaplacianMaxFactorEntries)) {
+      !system.Init(setup.op(), anchors, UvLaplacianMaxFactorEntries(n))) {
     return false;
   }
   *uv = system.Solve(Dequantize(q, step), DequantizeAnchors(anchor_q, step));

@@ -75,9 +75,12 @@ struct UvLaplacianEncoderOptions {
   bool error_diffusion = true;
 };
 
-// Caps the factor of the least-squares system (entries), so that hostile
-// connectivity fails instead of exhausting memory.
-constexpr int64_t kUvLaplacianMaxFactorEntries = int64_t{1} << 28;
+// Caps the factor of the least-squares system of |num_vertices| texture
+// vertices (entries, 8 bytes each): linear in the mesh, at most 2^28, so
+// that hostile connectivity fails instead of exhausting memory. Mesh
+// Laplacians under nested dissection need far less (O(n log n) with a small
+// constant).
+int64_t UvLaplacianMaxFactorEntries(int num_vertices);
 
 // Encodes |uv| (one row per texture vertex of |mesh|, in frame units).
 // |reconstruction|, if given, receives what the decoder will reconstruct

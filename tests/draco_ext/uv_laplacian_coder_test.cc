@@ -488,5 +488,29 @@ TEST(UvLaplacianSchemeTest, TruncatedFilesFailToDecode) {
   }
 }
 
+TEST(UvLaplacianSchemeTest, CorruptFilesFailOrDecodeFiniteUvs) {
+  auto mesh = ReadTestMesh(UvTestdataPath("torus_uv.obj"));
+  ASSERT_TRUE(mesh.ok());
+  const auto bytes =
+      EncodeMeshToBytes(*mesh.value(), {14, 10, 10, "laplacian_cotan", ""});
+  ASSERT_TRUE(bytes.ok());
+  std::mt19937 random(11);
+  int rejected = 0;
+  for (int trial = 0; trial < 200; ++trial) {
+    std::vector<char> corrupt = bytes.value();
+    corrupt[random() % corrupt.size()] ^= static_cast<char>(1 + random() % 255);
+    const auto decoded = DecodeDracoMesh(corrupt);
+    if (!decoded.ok()) {
+      ++rejected;
+      continue;
+    }
+    for (const float value :
+         CornerValues(*decoded.value(), GeometryAttribute::TEX_COORD)) {
+      ASSERT_TRUE(std::isfinite(value));
+    }
+  }
+  EXPECT_GT(rejected, 0);
+}
+
 }  // namespace
 }  // namespace draco
