@@ -43,8 +43,10 @@ class UvLaplacianSystem {
  public:
   // Builds and factorises the normal equations of |op| with anchors at the
   // texture vertices |anchors|. False when the system is singular (a chart
-  // whose Laplacian has more null space than its anchors remove) or its
-  // factor would exceed |max_factor_entries|.
+  // whose Laplacian has more null space than its anchors remove), its
+  // factor would exceed |max_factor_entries| or its factorisation would
+  // take more than about 1024 n^1.5 flops (n unknowns; see
+  // uv_laplacian_system.cc).
   bool Init(const UvLaplacianOperator &op, const std::vector<int> &anchors,
             int64_t max_factor_entries);
 
