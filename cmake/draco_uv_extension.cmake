@@ -9,12 +9,19 @@ set(draco_uv_schemes "${draco_uv_root}/prediction_schemes")
 set(draco_uv_ext "${draco_uv_root}/draco_ext")
 
 list(APPEND draco_include_paths "${draco_uv_root}")
+# The Laplacian texture coordinate coder needs Eigen, which Draco itself puts
+# on the include path only for its transcoder.
+if(DRACO_EIGEN_PATH)
+  list(APPEND draco_include_paths "${DRACO_EIGEN_PATH}")
+endif()
 
 list(
   APPEND draco_compression_attributes_pred_schemes_dec_sources
          "${draco_uv_ext}/uv_bitstream_guard.h"
          "${draco_uv_ext}/uv_fixed_point.h"
          "${draco_uv_ext}/uv_processing_order.h"
+         "${draco_uv_schemes}/mesh_prediction_scheme_tex_coords_laplacian_decoder.h"
+         "${draco_uv_schemes}/mesh_prediction_scheme_tex_coords_laplacian_shared.h"
          "${draco_uv_schemes}/mesh_prediction_scheme_tex_coords_weighted_decoder.h"
          "${draco_uv_schemes}/mesh_prediction_scheme_tex_coords_weighted_predictor.h"
          "${draco_uv_schemes}/mesh_prediction_scheme_tex_coords_weighted_shared.h"
@@ -22,6 +29,7 @@ list(
 
 list(
   APPEND draco_compression_attributes_pred_schemes_enc_sources
+         "${draco_uv_schemes}/mesh_prediction_scheme_tex_coords_laplacian_encoder.h"
          "${draco_uv_schemes}/mesh_prediction_scheme_tex_coords_weighted_encoder.h")
 
 # Object libraries with Draco's include paths (the prediction scheme lists
@@ -42,6 +50,18 @@ list(
          "${draco_uv_ext}/uv_seam_topology.cc"
          "${draco_uv_ext}/uv_seam_topology.h")
 
+# The Laplacian texture coordinate coder (encoder and decoder).
+list(
+  APPEND draco_compression_decode_sources
+         "${draco_uv_ext}/uv_laplacian_coder.cc"
+         "${draco_uv_ext}/uv_laplacian_coder.h"
+         "${draco_uv_ext}/uv_laplacian_operator.cc"
+         "${draco_uv_ext}/uv_laplacian_operator.h"
+         "${draco_uv_ext}/uv_laplacian_system.cc"
+         "${draco_uv_ext}/uv_laplacian_system.h"
+         "${draco_uv_ext}/uv_sparse_cholesky.cc"
+         "${draco_uv_ext}/uv_sparse_cholesky.h")
+
 list(
   APPEND draco_compression_encode_sources
          "${draco_uv_ext}/uv_compression_options.cc"
@@ -51,6 +71,8 @@ list(
          "${draco_uv_ext}/uv_gltf.cc"
          "${draco_uv_ext}/uv_gltf.h"
          "${draco_uv_ext}/uv_gltf_extension.h"
+         "${draco_uv_ext}/uv_laplacian_options.cc"
+         "${draco_uv_ext}/uv_laplacian_options.h"
          "${draco_uv_ext}/uv_prediction_options.cc"
          "${draco_uv_ext}/uv_prediction_options.h"
          "${draco_uv_ext}/mesh_edgebreaker_traversal_uv_seam_encoder.h"

@@ -16,6 +16,7 @@
 
 #include "draco/compression/encode.h"
 #include "draco/compression/expert_encode.h"
+#include "draco_ext/uv_laplacian_options.h"
 #include "draco_ext/uv_prediction_options.h"
 #include "draco_ext/uv_seam_options.h"
 
@@ -50,6 +51,7 @@ Status EncodeMeshWithSettings(const Mesh &mesh,
                          ConfigureUvSeams(settings.uv_seams, &mesh, &expert));
   DRACO_ASSIGN_OR_RETURN(const std::string uv_summary,
                          ConfigureUvPrediction(settings.uv_pred, &mesh, &expert));
+  DRACO_RETURN_IF_ERROR(ConfigureUvAnchors(settings.uv_anchors, &mesh, &expert));
   if (summary != nullptr) {
     *summary = seam_summary + uv_summary;
   }

@@ -13,8 +13,8 @@
 // limitations under the License.
 //
 // Encoding a mesh exactly as draco_encoder does for a given command line
-// (-qp, -qt, -cl, -uv_pred, -uv_seams), for draco_uv_eval, benchmarks and
-// tests.
+// (-qp, -qt, -cl, -uv_pred, -uv_seams, -uv_anchors), for draco_uv_eval,
+// benchmarks and tests.
 #ifndef DRACO_EXT_UV_ENCODE_SETTINGS_H_
 #define DRACO_EXT_UV_ENCODE_SETTINGS_H_
 
@@ -31,13 +31,15 @@ struct UvEncodeSettings {
   int qp = 14;
   int qt = 12;
   int cl = 10;
-  std::string uv_pred;  // -uv_pred; empty means stock Draco.
-  std::string uv_seams;  // -uv_seams; empty means stock Draco.
+  std::string uv_pred;     // -uv_pred; empty means stock Draco.
+  std::string uv_seams;    // -uv_seams; empty means stock Draco.
+  std::string uv_anchors;  // -uv_anchors; empty means the default.
 };
 
-// Encodes |mesh| like `draco_encoder -qp -qt -cl [-uv_pred] [-uv_seams]`
-// into |out|. |summary|, if given, receives the summaries of
-// ConfigureUvSeams() and ConfigureUvPrediction().
+// Encodes |mesh| like
+// `draco_encoder -qp -qt -cl [-uv_pred] [-uv_seams] [-uv_anchors]` into
+// |out|. |summary|, if given, receives the summaries of ConfigureUvSeams()
+// and ConfigureUvPrediction().
 Status EncodeMeshWithSettings(const Mesh &mesh,
                               const UvEncodeSettings &settings,
                               EncoderBuffer *out,

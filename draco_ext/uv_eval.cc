@@ -29,6 +29,7 @@
 #include "draco/mesh/mesh_attribute_corner_table.h"
 #include "draco/mesh/mesh_misc_functions.h"
 #include "draco_ext/uv_encode_settings.h"
+#include "draco_ext/uv_laplacian_options.h"
 #include "draco_ext/uv_seam_stats.h"
 
 namespace draco {
@@ -392,6 +393,10 @@ StatusOr<UvEvalRow> MeasureScheme(const std::string &name, const Mesh &mesh,
   if (settings.uv_pred == "draco") {
     settings.uv_pred.clear();
   }
+  row.lossy = IsUvLaplacianName(settings.uv_pred);
+  if (row.lossy) {
+    settings.uv_anchors = options.uv_anchors;
+  }
   const int64_t size_without_uvs =
       baseline.size_without_uvs.at(settings.uv_seams);
   TimedEncoding encoding;
@@ -406,7 +411,8 @@ StatusOr<UvEvalRow> MeasureScheme(const std::string &name, const Mesh &mesh,
   row.bpv = row.uv_vertices > 0 ? 8.0 * row.uv_bytes / row.uv_vertices : 0.0;
   row.ratio_vs_draco =
       static_cast<double>(row.uv_bytes) / baseline.stock_best_uv_bytes;
-  row.round_trip_ok = CornerUvs(*decoded) == baseline.reference_uvs;
+  row.round_trip_ok =
+      row.lossy || CornerUvs(*decoded) == baseline.reference_uvs;
   DRACO_ASSIGN_OR_RETURN(row.rmse, UvRmse(mesh, *decoded, options.qp));
   row.detail = encoding.summary;
   return row;

@@ -41,6 +41,8 @@ struct UvEvalOptions {
   // also be given so, e.g. "weighted+context"). The reference (stock
   // Draco's best of -cl 7 and 10) keeps stock seams.
   std::vector<std::string> seams = {"draco"};
+  // -uv_anchors of the Laplacian schemes; empty means the default.
+  std::string uv_anchors;
 };
 
 // The -uv_pred and -uv_seams names of a measured scheme name
@@ -65,7 +67,10 @@ struct UvEvalRow {
   double enc_ms = 0;
   double dec_ms = 0;        // Decoding the whole mesh.
   double ratio_vs_draco = 0;  // uv_bytes / stock's best of -cl 7 and 10.
-  bool round_trip_ok = false;  // Decoded UVs as expected (bit-exact).
+  bool lossy = false;          // A lossy scheme (the Laplacians).
+  // Decoded UVs as expected: bit-exact for lossless schemes, decoded at all
+  // for lossy ones (their error is |rmse|).
+  bool round_trip_ok = false;
   std::string detail;          // E.g. what "auto" chose.
 };
 

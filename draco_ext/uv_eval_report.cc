@@ -129,7 +129,7 @@ std::string FormatMeshTable(const std::vector<UvEvalRow> &rows) {
         row.qt, row.scheme.c_str(), static_cast<long long>(row.uv_bytes),
         row.seam_bytes, row.bpv, row.ratio_vs_draco, row.rmse,
         row.rmse * kTexelsPerUvUnit, row.enc_ms, row.dec_ms,
-        row.round_trip_ok ? "ok" : "MISMATCH");
+        !row.round_trip_ok ? "MISMATCH" : row.lossy ? "lossy" : "ok");
   }
   return table;
 }
@@ -145,7 +145,8 @@ std::string CsvLine(const UvEvalRow &row) {
                 static_cast<long long>(row.uv_vertices),
                 static_cast<long long>(row.uv_bytes), row.seam_bytes, row.bpv,
                 row.rmse, row.rmse * kTexelsPerUvUnit, row.enc_ms, row.dec_ms,
-                row.ratio_vs_draco, row.round_trip_ok ? "ok" : "mismatch");
+                row.ratio_vs_draco,
+                !row.round_trip_ok ? "mismatch" : row.lossy ? "lossy" : "ok");
 }
 
 void UvEvalReport::Add(const std::vector<UvEvalRow> &rows) {

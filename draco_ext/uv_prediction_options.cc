@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "draco/core/encoder_buffer.h"
+#include "draco_ext/uv_laplacian_options.h"
 #include "prediction_schemes/uv_stencil_geometry.h"
 
 namespace draco {
@@ -143,14 +144,15 @@ StatusOr<size_t> EncodedSize(ExpertEncoder *encoder) {
   return buffer.size();
 }
 
-// Candidates of -uv_pred auto: every scheme that decodes about as fast as
-// stock Draco (so not weighted_multi). Stock Draco's choice comes first so
-// that it wins ties.
+// Candidates of -uv_pred auto: every lossless scheme that decodes about as
+// fast as stock Draco (so not weighted_multi, nor the lossy Laplacians). Stock
+// Draco's choice comes first so that it wins ties.
 std::vector<PredictionSchemeMethod> AutoCandidates() {
   std::vector<PredictionSchemeMethod> candidates;
   for (const UvPredictionName &entry : UvPredictionNames()) {
     if (std::string(entry.name) != kAutoName &&
-        entry.method != MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI) {
+        entry.method != MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI &&
+        !IsLossyUvPrediction(entry.method)) {
       candidates.push_back(entry.method);
     }
   }
@@ -201,8 +203,14 @@ const std::vector<UvPredictionName> &UvPredictionNames() {
        "mesh-guided weighted parallelogram (draco-uv)"},
       {"weighted_multi", MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI,
        "weighted, all stencils: smaller, slower to decode"},
+      {"laplacian_tutte", MESH_PREDICTION_TEX_COORDS_LAPLACIAN,
+       "lossy Laplacian coding, Tutte weights (draco-uv)"},
+      {"laplacian_cotan", MESH_PREDICTION_TEX_COORDS_LAPLACIAN,
+       "lossy Laplacian coding, cotangent weights (draco-uv)"},
+      {"laplacian_mv", MESH_PREDICTION_TEX_COORDS_LAPLACIAN,
+       "lossy Laplacian coding, mean-value weights (draco-uv)"},
       {kAutoName, PREDICTION_UNDEFINED,
-       "smallest of the above but weighted_multi"},
+       "smallest of the lossless schemes above but weighted_multi"},
   };
   return names;
 }
@@ -216,7 +224,7 @@ std::string UvPredictionUsage() {
     line.resize(std::max<size_t>(line.size() + 1, 48), ' ');
     usage += line + entry.description + "\n";
   }
-  return usage;
+  return usage + UvAnchorsUsage();
 }
 
 bool IsAutoUvPrediction(const std::string &name) { return name == kAutoName; }
@@ -244,7 +252,8 @@ std::string UvPredictionNameOf(PredictionSchemeMethod method) {
 }
 
 bool UvPredictionNeedsQuantizedPositions(PredictionSchemeMethod method) {
-  return method == MESH_PREDICTION_TEX_COORDS_PORTABLE || IsWeighted(method);
+  return method == MESH_PREDICTION_TEX_COORDS_PORTABLE || IsWeighted(method) ||
+         method == MESH_PREDICTION_TEX_COORDS_LAPLACIAN;
 }
 
 bool IsDracoUvPredictionMethod(PredictionSchemeMethod method) {
@@ -280,6 +289,9 @@ StatusOr<std::string> ConfigureUvPrediction(const std::string &name,
     }
     DRACO_RETURN_IF_ERROR(CheckSettingsFor(method, *mesh, *encoder, att_id));
     DRACO_RETURN_IF_ERROR(encoder->SetAttributePredictionScheme(att_id, method));
+    if (IsUvLaplacianName(name)) {
+      DRACO_RETURN_IF_ERROR(ConfigureUvLaplacian(name, att_id, encoder));
+    }
     summary += "UV prediction: " + AttributeLabel(*mesh, att_id) + " -> " +
                name + "\n";
   }

@@ -25,8 +25,12 @@
 //                    as fast as stock Draco
 //   weighted_multi   MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI: weighted
 //                    with every stencil; smaller, slower to decode
-//   auto             per attribute, the smallest of the above schemes that
-//                    decode as fast as stock (all but weighted_multi)
+//   laplacian_tutte, laplacian_cotan, laplacian_mv
+//                    MESH_PREDICTION_TEX_COORDS_LAPLACIAN (draco-uv, lossy:
+//                    see uv_laplacian_options.h)
+//   auto             per attribute, the smallest of the lossless schemes
+//                    above that decode as fast as stock (all but
+//                    weighted_multi and the Laplacians)
 #ifndef DRACO_EXT_UV_PREDICTION_OPTIONS_H_
 #define DRACO_EXT_UV_PREDICTION_OPTIONS_H_
 

@@ -56,6 +56,9 @@ void Usage() {
       "  --seams LIST     -uv_seams names (draco, context), each with every\n"
       "                   scheme, default draco; a scheme may name its own\n"
       "                   as <scheme>+<seams>, e.g. weighted+context\n"
+      "  --uv_anchors K   -uv_anchors of the laplacian_* schemes (K or "
+      "random:K),\n"
+      "                   default 50 greedy\n"
       "  --repeat N       timing runs (minimum reported), default 3\n"
       "  --csv FILE       one row per (mesh, scheme, qt)\n"
       "  --plot FILE      rate-distortion chart (PNG or SVG, needs python3 "
@@ -118,6 +121,8 @@ bool ParseArgs(int argc, char **argv, Args *args) {
       args->options.schemes = SplitList(argv[++i]);
     } else if (flag == "--seams") {
       args->options.seams = SplitList(argv[++i]);
+    } else if (flag == "--uv_anchors") {
+      args->options.uv_anchors = argv[++i];
     } else if (flag == "--csv") {
       args->csv = argv[++i];
     } else if (flag == "--plot") {

@@ -182,6 +182,26 @@ TEST(UvGltfTranscodeTest, AutoRoundTripsOnAssetsOfEveryKind) {
   }
 }
 
+// The lossy Laplacian coder through draco_transcoder: positions and
+// everything but the UV values read back like stock coding, and the file
+// requires the draco-uv extension.
+TEST(UvGltfTranscodeTest, LaplacianRoundTripsOnAssetsOfEveryKind) {
+  UvGltfEvalOptions options;
+  options.schemes = {"laplacian_mv", "laplacian_cotan"};
+  for (const std::string asset :
+       {"CesiumMilkTruck/glTF/CesiumMilkTruck.gltf",
+        "MultiUVTest/glTF/MultiUVTest.gltf",
+        "CesiumMan/glTF_Binary/CesiumMan.glb"}) {
+    const auto rows = EvaluateGltfAsset(DracoTestdataPath(asset), asset,
+                                        options, UvTempPath(""));
+    ASSERT_TRUE(rows.ok()) << asset << ": " << rows.status().error_msg();
+    for (const UvGltfEvalRow &row : rows.value()) {
+      EXPECT_TRUE(row.round_trip_ok) << asset << ": " << row.detail;
+      EXPECT_TRUE(row.requires_extension) << asset;
+    }
+  }
+}
+
 TEST(UvGltfTranscodeTest, StockOutputDoesNotRequireTheExtension) {
   const std::string output = UvTempPath("stock_milk_truck.gltf");
   ASSERT_TRUE(

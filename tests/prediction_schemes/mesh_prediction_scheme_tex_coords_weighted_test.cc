@@ -253,7 +253,7 @@ struct RoundTripCase {
 // bit-identical, since both are lossless on the same quantisation grid.
 void ExpectWeightedMatchesStock(const Mesh &mesh, const RoundTripCase &c,
                                 const std::string &label) {
-  UvEncodeSettings settings{c.qp, c.qt, c.cl, ""};
+  UvEncodeSettings settings{c.qp, c.qt, c.cl, "", ""};
   const auto stock = EncodeMeshToBytes(mesh, settings);
   ASSERT_TRUE(stock.ok()) << label << ": " << stock.status().error_msg();
   settings.uv_pred = c.scheme;

@@ -1,0 +1,328 @@
+// Copyright 2026 The draco-uv Authors.
+//
+// Licensed under the Apache License, Version 2.0 (the "License");
+// you may not use this file except in compliance with the License.
+// You may obtain a copy of the License at
+//
+//      http://www.apache.org/licenses/LICENSE-2.0
+//
+// Unless required by applicable law or agreed to in writing, software
+// distributed under the License is distributed on an "AS IS" BASIS,
+// WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+// See the License for the specific language governing permissions and
+// limitations under the License.
+//
+#include "draco_ext/uv_laplacian_operator.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace draco {
+
+namespace {
+
+// A triangle is degenerate when sin(angle) is below this at some corner.
+constexpr double kMinSine = 1e-9;
+// A row's weights are usable when their sum is at least this fraction of
+// the sum of their magnitudes (cotangent weights can be negative).
+constexpr double kMinWeightSumRatio = 0.1;
+
+bool HasDistinctCorners(const std::array<int, 3> &face) {
+  return face[0] != face[1] && face[1] != face[2] && face[2] != face[0];
+}
+
+// Distinct neighbours of every texture vertex, sorted, compressed.
+class Adjacency {
+ public:
+  explicit Adjacency(const UvLaplacianMesh &mesh) {
+    const int n = mesh.num_vertices();
+    start_.assign(n + 1, 0);
+    for (const auto &face : mesh.faces) {
+      for (int k = 0; k < 3; ++k) {
+        start_[face[k] + 1] += 2;
+      }
+    }
+    std::partial_sum(start_.begin(), start_.end(), start_.begin());
+    neighbour_.resize(start_[n]);
+    std::vector<int> fill(start_.begin(), start_.end() - 1);
+    for (const auto &face : mesh.faces) {
+      for (int k = 0; k < 3; ++k) {
+        neighbour_[fill[face[k]]++] = face[(k + 1) % 3];
+        neighbour_[fill[face[k]]++] = face[(k + 2) % 3];
+      }
+    }
+    // Sort, drop duplicates and self references, compact.
+    int out = 0;
+    for (int v = 0; v < n; ++v) {
+      const auto begin = neighbour_.begin() + start_[v];
+      const auto end = neighbour_.begin() + start_[v + 1];
+      std::sort(begin, end);
+      const int row_begin = out;
+      for (auto it = begin; it != end; ++it) {
+        if (*it != v && (out == row_begin || neighbour_[out - 1] != *it)) {
+          neighbour_[out++] = *it;
+        }
+      }
+      start_[v] = row_begin;
+    }
+    start_[n] = out;
+    neighbour_.resize(out);
+  }
+
+  int begin(int v) const { return start_[v]; }
+  int end(int v) const { return start_[v + 1]; }
+  int neighbour(int slot) const { return neighbour_[slot]; }
+  int degree(int v) const { return end(v) - begin(v); }
+  int num_slots() const { return static_cast<int>(neighbour_.size()); }
+  // Slot of neighbour |j| of |i|; j must be a neighbour.
+  int Slot(int i, int j) const {
+    return static_cast<int>(
+        std::lower_bound(neighbour_.begin() + start_[i],
+                         neighbour_.begin() + start_[i + 1], j) -
+        neighbour_.begin());
+  }
+
+ private:
+  std::vector<int> start_;
+  std::vector<int> neighbour_;
+};
+
+// Angle quantities at one corner of a 3D triangle.
+struct CornerAngle {
+  double cotangent = 0;
+  double tan_half = 0;
+  double length_next = 0;  // |p_next - p|.
+  double length_prev = 0;  // |p_prev - p|.
+};
+
+// Angles at corner |k| of |face|; false for a degenerate triangle.
+bool ComputeCornerAngle(const UvLaplacianMesh &mesh,
+                        const std::array<int, 3> &face, int k,
+                        CornerAngle *angle) {
+  const auto &p = mesh.positions[face[k]];
+  const auto &q = mesh.positions[face[(k + 1) % 3]];
+  const auto &r = mesh.positions[face[(k + 2) % 3]];
+  const double e1[3] = {q[0] - p[0], q[1] - p[1], q[2] - p[2]};
+  const double e2[3] = {r[0] - p[0], r[1] - p[1], r[2] - p[2]};
+  const double dot = e1[0] * e2[0] + e1[1] * e2[1] + e1[2] * e2[2];
+  const double cross[3] = {e1[1] * e2[2] - e1[2] * e2[1],
+                           e1[2] * e2[0] - e1[0] * e2[2],
+                           e1[0] * e2[1] - e1[1] * e2[0]};
+  const double sine_area = std::sqrt(
+      cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]);
+  angle->length_next = std::sqrt(e1[0] * e1[0] + e1[1] * e1[1] + e1[2] * e1[2]);
+  angle->length_prev = std::sqrt(e2[0] * e2[0] + e2[1] * e2[1] + e2[2] * e2[2]);
+  const double lengths = angle->length_next * angle->length_prev;
+  if (!(sine_area > kMinSine * lengths)) {
+    return false;
+  }
+  angle->cotangent = dot / sine_area;
+  // tan(a / 2) = sin(a) / (1 + cos(a)).
+  angle->tan_half = sine_area / (lengths + dot);
+  return std::isfinite(angle->cotangent) && std::isfinite(angle->tan_half);
+}
+
+class UnionFind {
+ public:
+  explicit UnionFind(int n) : parent_(n) {
+    std::iota(parent_.begin(), parent_.end(), 0);
+  }
+  int Find(int x) {
+    while (parent_[x] != x) {
+      parent_[x] = parent_[parent_[x]];
+      x = parent_[x];
+    }
+    return x;
+  }
+  void Union(int a, int b) {
+    a = Find(a);
+    b = Find(b);
+    if (a != b) {
+      parent_[std::max(a, b)] = std::min(a, b);
+    }
+  }
+
+ private:
+  std::vector<int> parent_;
+};
+
+double SquaredDistance(const std::array<double, 3> &a,
+                       const std::array<double, 3> &b) {
+  const double d[3] = {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
+  return d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+}
+
+// Weights of the rows of one kind, per neighbour slot, before scaling.
+struct RowWeights {
+  std::vector<double> weight;    // w_ij, eq. 6-8.
+  std::vector<bool> degenerate;  // Per vertex: next to a degenerate face.
+};
+
+RowWeights ComputeRowWeights(const UvLaplacianMesh &mesh,
+                             const Adjacency &adjacency,
+                             UvLaplacianKind kind) {
+  RowWeights rows;
+  rows.weight.assign(adjacency.num_slots(),
+                     kind == UvLaplacianKind::kTutte ? 1.0 : 0.0);
+  rows.degenerate.assign(mesh.num_vertices(), false);
+  if (kind == UvLaplacianKind::kTutte) {
+    return rows;
+  }
+  for (const auto &face : mesh.faces) {
+    if (!HasDistinctCorners(face)) {
+      continue;
+    }
+    std::array<CornerAngle, 3> angles;
+    bool valid = true;
+    for (int k = 0; k < 3; ++k) {
+      valid = valid && ComputeCornerAngle(mesh, face, k, &angles[k]);
+    }
+    if (!valid) {
+      for (const int v : face) {
+        rows.degenerate[v] = true;
+      }
+      continue;
+    }
+    for (int k = 0; k < 3; ++k) {
+      const int i = face[k];
+      const int j = face[(k + 1) % 3];
+      const int l = face[(k + 2) % 3];
+      if (kind == UvLaplacianKind::kMeanValue) {
+        rows.weight[adjacency.Slot(i, j)] +=
+            angles[k].tan_half / angles[k].length_next;
+        rows.weight[adjacency.Slot(i, l)] +=
+            angles[k].tan_half / angles[k].length_prev;
+      } else {
+        rows.weight[adjacency.Slot(j, l)] += angles[k].cotangent;
+        rows.weight[adjacency.Slot(l, j)] += angles[k].cotangent;
+      }
+    }
+  }
+  return rows;
+}
+
+}  // namespace
+
+std::vector<bool> UvBoundaryVertices(const UvLaplacianMesh &mesh) {
+  const Adjacency adjacency(mesh);
+  std::vector<int> uses(adjacency.num_slots(), 0);
+  for (const auto &face : mesh.faces) {
+    if (!HasDistinctCorners(face)) {
+      continue;
+    }
+    for (int k = 0; k < 3; ++k) {
+      ++uses[adjacency.Slot(face[k], face[(k + 1) % 3])];
+      ++uses[adjacency.Slot(face[(k + 1) % 3], face[k])];
+    }
+  }
+  std::vector<bool> boundary(mesh.num_vertices(), false);
+  for (int v = 0; v < mesh.num_vertices(); ++v) {
+    for (int s = adjacency.begin(v); s < adjacency.end(v); ++s) {
+      if (uses[s] != 2) {
+        boundary[v] = true;
+      }
+    }
+  }
+  return boundary;
+}
+
+UvCharts ComputeUvCharts(const UvLaplacianMesh &mesh) {
+  const int n = mesh.num_vertices();
+  UnionFind components(n);
+  for (const auto &face : mesh.faces) {
+    components.Union(face[0], face[1]);
+    components.Union(face[1], face[2]);
+  }
+  // Roots are the smallest vertices of their charts; number charts in that
+  // order.
+  UvCharts charts;
+  charts.chart_of_vertex.resize(n);
+  std::vector<int> first_vertex;
+  for (int v = 0; v < n; ++v) {
+    const int root = components.Find(v);
+    if (root == v) {
+      charts.chart_of_vertex[v] = static_cast<int>(first_vertex.size());
+      first_vertex.push_back(v);
+    } else {
+      charts.chart_of_vertex[v] = charts.chart_of_vertex[root];
+    }
+  }
+  charts.num_charts = static_cast<int>(first_vertex.size());
+  std::vector<int> farthest(first_vertex);
+  std::vector<double> distance(charts.num_charts, 0.0);
+  for (int v = 0; v < n; ++v) {
+    const int chart = charts.chart_of_vertex[v];
+    const double d =
+        SquaredDistance(mesh.positions[v], mesh.positions[first_vertex[chart]]);
+    if (d > distance[chart]) {
+      distance[chart] = d;
+      farthest[chart] = v;
+    }
+  }
+  for (int chart = 0; chart < charts.num_charts; ++chart) {
+    charts.anchors.push_back(first_vertex[chart]);
+    if (farthest[chart] != first_vertex[chart]) {
+      charts.anchors.push_back(farthest[chart]);
+    }
+  }
+  return charts;
+}
+
+void UvLaplacianOperator::Build(const UvLaplacianMesh &mesh,
+                                UvLaplacianKind kind) {
+  const Adjacency adjacency(mesh);
+  const RowWeights rows = ComputeRowWeights(mesh, adjacency, kind);
+  num_fallback_rows_ = 0;
+  row_start_.assign(1, 0);
+  column_.clear();
+  value_.clear();
+  for (int i = 0; i < mesh.num_vertices(); ++i) {
+    const int degree = adjacency.degree(i);
+    if (degree == 0) {
+      row_start_.push_back(static_cast<int>(column_.size()));
+      continue;
+    }
+    // Eq. 7 with the diagonal scaled to -1, or Tutte weights when the row's
+    // weights are unusable.
+    double sum = 0, magnitude = 0;
+    for (int s = adjacency.begin(i); s < adjacency.end(i); ++s) {
+      sum += rows.weight[s];
+      magnitude += std::abs(rows.weight[s]);
+    }
+    const bool usable = !rows.degenerate[i] && std::isfinite(sum) &&
+                        sum > kMinWeightSumRatio * magnitude;
+    if (!usable) {
+      ++num_fallback_rows_;
+    }
+    column_.push_back(i);
+    value_.push_back(-1.0);
+    for (int s = adjacency.begin(i); s < adjacency.end(i); ++s) {
+      column_.push_back(adjacency.neighbour(s));
+      value_.push_back(usable ? rows.weight[s] / sum : 1.0 / degree);
+    }
+    row_start_.push_back(static_cast<int>(column_.size()));
+  }
+}
+
+UvValues UvLaplacianOperator::Apply(const UvValues &x) const {
+  UvValues r = UvValues::Zero(num_rows(), 2);
+  for (int row = 0; row < num_rows(); ++row) {
+    for (int e = row_start_[row]; e < row_start_[row + 1]; ++e) {
+      r.row(row) += value_[e] * x.row(column_[e]);
+    }
+  }
+  return r;
+}
+
+UvValues UvLaplacianOperator::ApplyTransposed(const UvValues &r) const {
+  UvValues x = UvValues::Zero(num_rows(), 2);
+  for (int row = 0; row < num_rows(); ++row) {
+    for (int e = row_start_[row]; e < row_start_[row + 1]; ++e) {
+      x.row(column_[e]) += value_[e] * r.row(row);
+    }
+  }
+  return x;
+}
+
+}  // namespace draco

@@ -1,0 +1,61 @@
+// Copyright 2026 The draco-uv Authors.
+//
+// Licensed under the Apache License, Version 2.0 (the "License");
+// you may not use this file except in compliance with the License.
+// You may obtain a copy of the License at
+//
+//      http://www.apache.org/licenses/LICENSE-2.0
+//
+// Unless required by applicable law or agreed to in writing, software
+// distributed under the License is distributed on an "AS IS" BASIS,
+// WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+// See the License for the specific language governing permissions and
+// limitations under the License.
+//
+// The encoder settings of the lossy Laplacian texture coordinate scheme
+// (MESH_PREDICTION_TEX_COORDS_LAPLACIAN):
+//   -uv_pred laplacian_tutte | laplacian_cotan | laplacian_mv
+//       the Laplacian (eq. 6-8 of [Váša & Brunnett 2014]); -qt sets the
+//       quantisation step of its residuals, range / (2^qt - 1);
+//   -uv_anchors K | random:K
+//       K extra anchors, greedy by largest error (default 50) or random.
+// Lossy: -uv_pred auto never picks these names.
+#ifndef DRACO_EXT_UV_LAPLACIAN_OPTIONS_H_
+#define DRACO_EXT_UV_LAPLACIAN_OPTIONS_H_
+
+#include <string>
+
+#include "draco/compression/config/compression_shared.h"
+#include "draco/compression/expert_encode.h"
+#include "draco/core/status.h"
+#include "draco/mesh/mesh.h"
+
+namespace draco {
+
+// True for prediction schemes whose decoded values differ from the
+// quantised input.
+bool IsLossyUvPrediction(PredictionSchemeMethod method);
+
+// True for the -uv_pred names of the Laplacian scheme.
+bool IsUvLaplacianName(const std::string &name);
+
+// Sets up attribute |att_id| of |encoder| for -uv_pred |name| (a Laplacian
+// name): the operator, the step from the attribute's quantisation bits (the
+// user's -qt, 1 to 20) and a finer quantisation frame for Draco (see
+// MeshPredictionSchemeTexCoordsLaplacianEncoder). Call once, after the
+// prediction scheme is set.
+Status ConfigureUvLaplacian(const std::string &name, int att_id,
+                            ExpertEncoder *encoder);
+
+// Applies -uv_anchors |spec| ("K" or "random:K", K >= 0) to every
+// TEX_COORD attribute of |mesh| that uses the Laplacian scheme. An empty
+// spec changes nothing; a spec without such an attribute is an error.
+Status ConfigureUvAnchors(const std::string &spec, const Mesh *mesh,
+                          ExpertEncoder *encoder);
+
+// Help text of -uv_anchors for the tools' -h.
+std::string UvAnchorsUsage();
+
+}  // namespace draco
+
+#endif  // DRACO_EXT_UV_LAPLACIAN_OPTIONS_H_

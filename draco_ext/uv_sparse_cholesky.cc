@@ -1,0 +1,441 @@
+// Copyright 2026 The draco-uv Authors.
+//
+// Licensed under the Apache License, Version 2.0 (the "License");
+// you may not use this file except in compliance with the License.
+// You may obtain a copy of the License at
+//
+//      http://www.apache.org/licenses/LICENSE-2.0
+//
+// Unless required by applicable law or agreed to in writing, software
+// distributed under the License is distributed on an "AS IS" BASIS,
+// WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+// See the License for the specific language governing permissions and
+// limitations under the License.
+//
+#include "draco_ext/uv_sparse_cholesky.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <utility>
+
+#include <Eigen/Cholesky>
+#include <Eigen/Core>
+
+namespace draco {
+
+namespace {
+
+// Dissection stops at subsets of at most this many points (dense leaves).
+constexpr int kLeafPoints = 32;
+
+}  // namespace
+
+// Nested dissection of the point graph [George & Liu 1978]: every subset is
+// split into its connected components, and a connected subset at the median
+// level of a breadth-first level structure rooted at a pseudo-peripheral
+// point. Points are appended to |order| children first, so that the order
+// in which nodes are created is a postorder of the dissection tree.
+class UvSparseCholesky::Dissection {
+ public:
+  explicit Dissection(const UvMatrixGraph &graph)
+      : graph_(graph),
+        label_(graph.size(), -1),
+        level_(graph.size(), -1) {}
+
+  // Returns the index of the subtree's root in |nodes|.
+  int Dissect(std::vector<int> points, std::vector<Node> *nodes,
+              std::vector<int> *order) {
+    if (points.size() <= static_cast<size_t>(kLeafPoints)) {
+      std::sort(points.begin(), points.end());
+      return AddNode(points, {}, nodes, order);
+    }
+    std::vector<std::vector<int>> parts;
+    std::vector<int> separator;
+    Split(points, &parts, &separator);
+    std::vector<int> children;
+    for (std::vector<int> &part : parts) {
+      children.push_back(Dissect(std::move(part), nodes, order));
+    }
+    std::sort(separator.begin(), separator.end());
+    return AddNode(separator, std::move(children), nodes, order);
+  }
+
+ private:
+  static int AddNode(const std::vector<int> &points, std::vector<int> children,
+                     std::vector<Node> *nodes, std::vector<int> *order) {
+    Node node;
+    node.first_column = static_cast<int>(order->size());
+    node.num_columns = static_cast<int>(points.size());
+    node.children = std::move(children);
+    order->insert(order->end(), points.begin(), points.end());
+    nodes->push_back(std::move(node));
+    return static_cast<int>(nodes->size()) - 1;
+  }
+
+  // A disconnected subset becomes its components (empty separator); a
+  // connected one loses the median level of its level structure.
+  void Split(const std::vector<int> &points,
+             std::vector<std::vector<int>> *parts,
+             std::vector<int> *separator) {
+    const int label = next_label_++;
+    for (const int p : points) {
+      label_[p] = label;
+    }
+    std::vector<int> levels;
+    std::vector<int> reached;
+    LevelStructure(points[0], label, &reached, &levels);
+    if (reached.size() < points.size()) {
+      SplitComponents(points, label, parts);
+      return;
+    }
+    // Pseudo-peripheral root: restart from a point of the last level while
+    // the depth grows.
+    for (int attempt = 0; attempt < 4; ++attempt) {
+      const int depth = static_cast<int>(levels.size());
+      std::vector<int> next_reached, next_levels;
+      LevelStructure(reached.back(), label, &next_reached, &next_levels);
+      if (static_cast<int>(next_levels.size()) <= depth) {
+        break;
+      }
+      reached.swap(next_reached);
+      levels.swap(next_levels);
+    }
+    // levels[l] is the end of level l in |reached|. The separator is the
+    // smallest level among those that leave 40-60% of the points before it.
+    const int num_levels = static_cast<int>(levels.size());
+    const double total = static_cast<double>(reached.size());
+    int best = -1;
+    for (int l = 1; l + 1 < num_levels; ++l) {
+      const double before = levels[l - 1] / total;
+      const int size = levels[l] - levels[l - 1];
+      if (before >= 0.4 && before <= 0.6 &&
+          (best < 0 || size < levels[best] - levels[best - 1])) {
+        best = l;
+      }
+    }
+    if (best < 0) {
+      // Few levels (a dense subset): the median level.
+      best = 1;
+      while (best + 1 < num_levels && levels[best] < total / 2) {
+        ++best;
+      }
+    }
+    const int sep_begin = levels[best - 1];
+    const int sep_end = levels[best];
+    separator->assign(reached.begin() + sep_begin, reached.begin() + sep_end);
+    if (sep_begin > 0) {
+      parts->emplace_back(reached.begin(), reached.begin() + sep_begin);
+    }
+    if (sep_end < static_cast<int>(reached.size())) {
+      parts->emplace_back(reached.begin() + sep_end, reached.end());
+    }
+  }
+
+  // |points| (labelled |label|) as connected components.
+  void SplitComponents(const std::vector<int> &points, int label,
+                       std::vector<std::vector<int>> *parts) {
+    std::vector<int> levels;
+    for (const int p : points) {
+      if (label_[p] != label) {
+        continue;  // In an earlier component.
+      }
+      parts->emplace_back();
+      LevelStructure(p, label, &parts->back(), &levels);
+      for (const int q : parts->back()) {
+        label_[q] = -1;
+      }
+    }
+  }
+
+  // Breadth-first search from |root| over points labelled |label|: |reached|
+  // in level order, |levels| the end offset of every level.
+  void LevelStructure(int root, int label, std::vector<int> *reached,
+                      std::vector<int> *levels) {
+    const int stamp = next_stamp_++;
+    reached->clear();
+    levels->clear();
+    reached->push_back(root);
+    level_[root] = stamp;
+    size_t begin = 0;
+    while (begin < reached->size()) {
+      const size_t end = reached->size();
+      for (size_t i = begin; i < end; ++i) {
+        const int p = (*reached)[i];
+        for (int e = graph_.start[p]; e < graph_.start[p + 1]; ++e) {
+          const int q = graph_.neighbour[e];
+          if (label_[q] == label && level_[q] != stamp) {
+            level_[q] = stamp;
+            reached->push_back(q);
+          }
+        }
+      }
+      levels->push_back(static_cast<int>(end));
+      begin = end;
+    }
+  }
+
+  const UvMatrixGraph &graph_;
+  std::vector<int> label_;
+  std::vector<int> level_;
+  int next_label_ = 0;
+  int next_stamp_ = 0;
+};
+
+bool UvSparseCholesky::Analyze(const UvMatrixGraph &graph,
+                               int64_t max_entries) {
+  const int n = graph.size();
+  nodes_.clear();
+  unknown_of_.clear();
+  unknown_of_.reserve(n);
+  std::vector<int> all(n);
+  std::iota(all.begin(), all.end(), 0);
+  if (n > 0) {
+    Dissection(graph).Dissect(std::move(all), &nodes_, &unknown_of_);
+  }
+  column_of_.assign(n, 0);
+  for (int column = 0; column < n; ++column) {
+    column_of_[unknown_of_[column]] = column;
+  }
+  ComputeUpdateRows(graph);
+  node_of_column_.assign(n, 0);
+  int64_t offset = 0;
+  for (size_t i = 0; i < nodes_.size(); ++i) {
+    Node &node = nodes_[i];
+    node.panel_offset = offset;
+    offset += static_cast<int64_t>(node.front_size()) * node.num_columns;
+    std::fill(node_of_column_.begin() + node.first_column,
+              node_of_column_.begin() + node.first_column + node.num_columns,
+              static_cast<int>(i));
+  }
+  if (offset > max_entries) {
+    return false;
+  }
+  panels_.assign(offset, 0.0);
+  return true;
+}
+
+void UvSparseCholesky::ComputeUpdateRows(const UvMatrixGraph &graph) {
+  // A node updates the later columns adjacent to its own and those its
+  // children update.
+  std::vector<int> seen(graph.size(), -1);
+  for (size_t i = 0; i < nodes_.size(); ++i) {
+    Node &node = nodes_[i];
+    const int end = node.first_column + node.num_columns;
+    std::vector<int> &rows = node.update_rows;
+    rows.clear();
+    auto add = [&](int column) {
+      if (column >= end && seen[column] != static_cast<int>(i)) {
+        seen[column] = static_cast<int>(i);
+        rows.push_back(column);
+      }
+    };
+    for (int column = node.first_column; column < end; ++column) {
+      const int u = unknown_of_[column];
+      for (int e = graph.start[u]; e < graph.start[u + 1]; ++e) {
+        add(column_of_[graph.neighbour[e]]);
+      }
+    }
+    for (const int child : node.children) {
+      for (const int column : nodes_[child].update_rows) {
+        add(column);
+      }
+    }
+    std::sort(rows.begin(), rows.end());
+  }
+}
+
+void UvSparseCholesky::FrontColumns(const Node &node,
+                                    std::vector<int> *columns) const {
+  columns->resize(node.front_size());
+  for (int i = 0; i < node.num_columns; ++i) {
+    (*columns)[i] = node.first_column + i;
+  }
+  std::copy(node.update_rows.begin(), node.update_rows.end(),
+            columns->begin() + node.num_columns);
+}
+
+Eigen::Map<Eigen::MatrixXd> UvSparseCholesky::Panel(const Node &node) {
+  return Eigen::Map<Eigen::MatrixXd>(panels_.data() + node.panel_offset,
+                                     node.front_size(), node.num_columns);
+}
+
+Eigen::Map<const Eigen::MatrixXd> UvSparseCholesky::Panel(
+    const Node &node) const {
+  return Eigen::Map<const Eigen::MatrixXd>(panels_.data() + node.panel_offset,
+                                           node.front_size(),
+                                           node.num_columns);
+}
+
+bool UvSparseCholesky::Factorize(const UvSymmetricMatrix &matrix) {
+  if (matrix.size != num_unknowns()) {
+    return false;
+  }
+  for (const double v : matrix.value) {
+    if (!std::isfinite(v)) {
+      return false;
+    }
+  }
+  std::vector<int> front_index(num_unknowns(), -1);
+  std::vector<std::vector<double>> updates(nodes_.size());
+  std::vector<double> front_storage;
+  std::vector<int> columns;
+  for (size_t n = 0; n < nodes_.size(); ++n) {
+    const Node &node = nodes_[n];
+    const int k = node.num_columns;
+    const int m = node.front_size();
+    FrontColumns(node, &columns);
+    for (int i = 0; i < m; ++i) {
+      front_index[columns[i]] = i;
+    }
+    front_storage.assign(static_cast<size_t>(m) * m, 0.0);
+    Eigen::Map<Eigen::MatrixXd> front(front_storage.data(), m, m);
+    // The node's columns of the matrix (lower triangle in factor order).
+    for (int j = 0; j < k; ++j) {
+      const int column = node.first_column + j;
+      const int unknown = unknown_of_[column];
+      for (int e = matrix.column_start[unknown];
+           e < matrix.column_start[unknown + 1]; ++e) {
+        const int row_column = column_of_[matrix.row[e]];
+        if (row_column < column) {
+          continue;
+        }
+        const int local = front_index[row_column];
+        if (local < 0 || local >= m || columns[local] != row_column) {
+          return false;  // Not in the analysed pattern.
+        }
+        front(local, j) += matrix.value[e];
+      }
+    }
+    // Extend-add of the children's update matrices.
+    for (const int child : node.children) {
+      const std::vector<int> &rows = nodes_[child].update_rows;
+      const int size = static_cast<int>(rows.size());
+      Eigen::Map<const Eigen::MatrixXd> update(updates[child].data(), size,
+                                               size);
+      for (int a = 0; a < size; ++a) {
+        const int column = front_index[rows[a]];
+        for (int b = a; b < size; ++b) {
+          front(front_index[rows[b]], column) += update(b, a);
+        }
+      }
+      std::vector<double>().swap(updates[child]);
+    }
+    // Dense partial factorisation: L11 L11^T = F11, L21 = F21 L11^-T,
+    // update = F22 - L21 L21^T.
+    if (k > 0) {
+      Eigen::Ref<Eigen::MatrixXd> diagonal = front.topLeftCorner(k, k);
+      Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt(diagonal);
+      if (llt.info() != Eigen::Success ||
+          !diagonal.diagonal().allFinite()) {
+        return false;
+      }
+      if (m > k) {
+        auto below = front.bottomLeftCorner(m - k, k);
+        diagonal.transpose().triangularView<Eigen::Upper>()
+            .solveInPlace<Eigen::OnTheRight>(below);
+        front.bottomRightCorner(m - k, m - k)
+            .selfadjointView<Eigen::Lower>()
+            .rankUpdate(below, -1.0);
+      }
+      Panel(node) = front.leftCols(k);
+    }
+    if (m > k) {
+      updates[n].resize(static_cast<size_t>(m - k) * (m - k));
+      Eigen::Map<Eigen::MatrixXd>(updates[n].data(), m - k, m - k) =
+          front.bottomRightCorner(m - k, m - k);
+    }
+  }
+  return true;
+}
+
+void UvSparseCholesky::UpdateColumn(Node &node, int local,
+                                    std::vector<double> *w) {
+  const int column = node.first_column + local;
+  const double x = (*w)[column];
+  if (x == 0.0) {
+    return;
+  }
+  Eigen::Map<Eigen::MatrixXd> panel = Panel(node);
+  const double d = panel(local, local);
+  const double r = std::hypot(d, x);
+  const double c = r / d;
+  const double s = x / d;
+  panel(local, local) = r;
+  (*w)[column] = 0.0;
+  const int k = node.num_columns;
+  for (int i = local + 1; i < node.front_size(); ++i) {
+    const int row = i < k ? node.first_column + i : node.update_rows[i - k];
+    const double l = (panel(i, local) + s * (*w)[row]) / c;
+    (*w)[row] = c * (*w)[row] - s * l;
+    panel(i, local) = l;
+  }
+}
+
+void UvSparseCholesky::AddToDiagonal(int unknown, double delta) {
+  // [Gill et al. 1974] method C1 along the elimination path: within a front
+  // every later column depends on the current one, and a front's last
+  // column hands over to its first update row.
+  std::vector<double> w(num_unknowns(), 0.0);
+  int column = column_of_[unknown];
+  w[column] = std::sqrt(delta);
+  while (true) {
+    Node &node = nodes_[node_of_column_[column]];
+    for (int local = column - node.first_column; local < node.num_columns;
+         ++local) {
+      UpdateColumn(node, local, &w);
+    }
+    if (node.update_rows.empty()) {
+      break;
+    }
+    column = node.update_rows[0];
+  }
+}
+
+void UvSparseCholesky::Solve(Eigen::Ref<Eigen::MatrixXd> rhs) const {
+  const int num_rhs = static_cast<int>(rhs.cols());
+  Eigen::MatrixXd y(num_unknowns(), num_rhs);
+  for (int u = 0; u < num_unknowns(); ++u) {
+    y.row(column_of_[u]) = rhs.row(u);
+  }
+  Eigen::MatrixXd gathered;
+  for (const Node &node : nodes_) {
+    const int k = node.num_columns;
+    if (k == 0) {
+      continue;
+    }
+    const auto panel = Panel(node);
+    auto own = y.middleRows(node.first_column, k);
+    panel.topRows(k).triangularView<Eigen::Lower>().solveInPlace(own);
+    if (!node.update_rows.empty()) {
+      gathered.noalias() = panel.bottomRows(node.update_rows.size()) * own;
+      for (size_t i = 0; i < node.update_rows.size(); ++i) {
+        y.row(node.update_rows[i]) -= gathered.row(i);
+      }
+    }
+  }
+  for (auto it = nodes_.rbegin(); it != nodes_.rend(); ++it) {
+    const Node &node = *it;
+    const int k = node.num_columns;
+    if (k == 0) {
+      continue;
+    }
+    const auto panel = Panel(node);
+    auto own = y.middleRows(node.first_column, k);
+    if (!node.update_rows.empty()) {
+      gathered.resize(node.update_rows.size(), num_rhs);
+      for (size_t i = 0; i < node.update_rows.size(); ++i) {
+        gathered.row(i) = y.row(node.update_rows[i]);
+      }
+      own.noalias() -=
+          panel.bottomRows(node.update_rows.size()).transpose() * gathered;
+    }
+    panel.topRows(k).transpose().triangularView<Eigen::Upper>().solveInPlace(
+        own);
+  }
+  for (int u = 0; u < num_unknowns(); ++u) {
+    rhs.row(u) = y.row(column_of_[u]);
+  }
+}
+
+}  // namespace draco
