@@ -420,7 +420,7 @@ TEST(UvLaplacianSchemeTest, DecodingIsDeterministic) {
   auto mesh = ReadTestMesh(UvTestdataPath("torus_uv.obj"));
   ASSERT_TRUE(mesh.ok());
   const auto bytes =
-      EncodeMeshToBytes(*mesh.value(), {14, 10, 10, "laplacian_mv", ""});
+      EncodeMeshToBytes(*mesh.value(), {14, 10, 10, "laplacian_mv", "", ""});
   ASSERT_TRUE(bytes.ok());
   const auto a = DecodeDracoMesh(bytes.value());
   const auto b = DecodeDracoMesh(bytes.value());
@@ -428,7 +428,7 @@ TEST(UvLaplacianSchemeTest, DecodingIsDeterministic) {
   EXPECT_EQ(CornerValues(*a.value(), GeometryAttribute::TEX_COORD),
             CornerValues(*b.value(), GeometryAttribute::TEX_COORD));
   const auto again =
-      EncodeMeshToBytes(*mesh.value(), {14, 10, 10, "laplacian_mv", ""});
+      EncodeMeshToBytes(*mesh.value(), {14, 10, 10, "laplacian_mv", "", ""});
   ASSERT_TRUE(again.ok());
   EXPECT_EQ(bytes.value(), again.value());
 }
@@ -439,7 +439,7 @@ TEST(UvLaplacianSchemeTest, AnchorOptionChangesTheStream) {
   std::map<std::string, size_t> sizes;
   for (const std::string anchors : {"", "50", "0", "random:50"}) {
     const auto bytes = EncodeMeshToBytes(
-        *mesh.value(), {14, 10, 10, "laplacian_cotan", anchors});
+        *mesh.value(), {14, 10, 10, "laplacian_cotan", "", anchors});
     ASSERT_TRUE(bytes.ok()) << anchors;
     ASSERT_TRUE(DecodeDracoMesh(bytes.value()).ok()) << anchors;
     sizes[anchors] = bytes.value().size();
@@ -452,11 +452,11 @@ TEST(UvLaplacianSchemeTest, RejectsBadOptions) {
   auto mesh = ReadTestMesh(UvTestdataPath("torus_uv.obj"));
   ASSERT_TRUE(mesh.ok());
   for (const UvEncodeSettings &bad : std::vector<UvEncodeSettings>{
-           {14, 10, 10, "laplacian_mv", "-3"},
-           {14, 10, 10, "laplacian_mv", "random:"},
-           {14, 10, 10, "weighted", "10"},
-           {14, 10, 10, "", "10"},
-           {14, 21, 10, "laplacian_mv", ""}}) {
+           {14, 10, 10, "laplacian_mv", "", "-3"},
+           {14, 10, 10, "laplacian_mv", "", "random:"},
+           {14, 10, 10, "weighted", "", "10"},
+           {14, 10, 10, "", "", "10"},
+           {14, 21, 10, "laplacian_mv", "", ""}}) {
     EXPECT_FALSE(EncodeMeshToBytes(*mesh.value(), bad).ok())
         << bad.uv_pred << " " << bad.uv_anchors << " qt " << bad.qt;
   }
@@ -469,7 +469,7 @@ TEST(UvLaplacianSchemeTest, AutoNeverPicksALossyScheme) {
   ASSERT_TRUE(mesh.ok());
   std::string summary;
   EncoderBuffer buffer;
-  ASSERT_TRUE(EncodeMeshWithSettings(*mesh.value(), {14, 6, 10, "auto", ""},
+  ASSERT_TRUE(EncodeMeshWithSettings(*mesh.value(), {14, 6, 10, "auto", "", ""},
                                      &buffer, &summary)
                   .ok());
   EXPECT_EQ(summary.find("laplacian"), std::string::npos) << summary;
@@ -479,7 +479,7 @@ TEST(UvLaplacianSchemeTest, TruncatedFilesFailToDecode) {
   auto mesh = ReadTestMesh(UvTestdataPath("torus_uv.obj"));
   ASSERT_TRUE(mesh.ok());
   const auto bytes =
-      EncodeMeshToBytes(*mesh.value(), {14, 10, 10, "laplacian_tutte", ""});
+      EncodeMeshToBytes(*mesh.value(), {14, 10, 10, "laplacian_tutte", "", ""});
   ASSERT_TRUE(bytes.ok());
   for (size_t size = 0; size < bytes.value().size(); size += 7) {
     const std::vector<char> truncated(bytes.value().begin(),
@@ -492,7 +492,7 @@ TEST(UvLaplacianSchemeTest, CorruptFilesFailOrDecodeFiniteUvs) {
   auto mesh = ReadTestMesh(UvTestdataPath("torus_uv.obj"));
   ASSERT_TRUE(mesh.ok());
   const auto bytes =
-      EncodeMeshToBytes(*mesh.value(), {14, 10, 10, "laplacian_cotan", ""});
+      EncodeMeshToBytes(*mesh.value(), {14, 10, 10, "laplacian_cotan", "", ""});
   ASSERT_TRUE(bytes.ok());
   std::mt19937 random(11);
   int rejected = 0;
