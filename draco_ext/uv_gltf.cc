@@ -15,7 +15,11 @@
 #include "draco_ext/uv_gltf.h"
 
 #ifdef DRACO_TRANSCODER_SUPPORTED
+#include <utility>
+#include <vector>
+
 #include "draco/compression/draco_compression_options.h"
+#include "draco/core/encoder_buffer.h"
 #include "draco_ext/uv_prediction_options.h"
 
 namespace draco {
@@ -35,6 +39,50 @@ bool UsesDracoUvScheme(const Mesh &mesh, const ExpertEncoder &encoder) {
   return false;
 }
 
+namespace {
+
+// What naming kUvGltfExtension in extensionsUsed and extensionsRequired adds
+// to the JSON that Draco's glTF writer emits: twice the quoted name, a comma
+// and the writer's indentation (76 bytes measured on sphere.gltf), rounded up
+// for GLB's 4-byte padding.
+constexpr size_t kUvGltfExtensionJsonBytes = 80;
+
+StatusOr<size_t> EncodedSize(ExpertEncoder *encoder) {
+  EncoderBuffer buffer;
+  DRACO_RETURN_IF_ERROR(encoder->EncodeToBuffer(&buffer));
+  return buffer.size();
+}
+
+// -uv_pred auto on the first primitive that would need the extension: keeps
+// draco-uv's schemes only if they save more than the extension costs, so that
+// auto never makes a file bigger than stock coding does. Later primitives of
+// the file ride on the extension for free.
+Status KeepDracoUvOnlyIfItPaysForTheExtension(const Mesh &mesh,
+                                              ExpertEncoder *encoder) {
+  DRACO_ASSIGN_OR_RETURN(const size_t chosen_size, EncodedSize(encoder));
+  std::vector<std::pair<int, int>> chosen_methods;
+  for (int i = 0; i < mesh.NumNamedAttributes(GeometryAttribute::TEX_COORD);
+       ++i) {
+    const int att_id =
+        mesh.GetNamedAttributeId(GeometryAttribute::TEX_COORD, i);
+    chosen_methods.emplace_back(
+        att_id, encoder->options().GetAttributeInt(att_id, "prediction_scheme",
+                                                   PREDICTION_UNDEFINED));
+    DRACO_RETURN_IF_ERROR(
+        encoder->SetAttributePredictionScheme(att_id, PREDICTION_UNDEFINED));
+  }
+  DRACO_ASSIGN_OR_RETURN(const size_t stock_size, EncodedSize(encoder));
+  if (chosen_size + kUvGltfExtensionJsonBytes >= stock_size) {
+    return OkStatus();
+  }
+  for (const auto &[att_id, method] : chosen_methods) {
+    DRACO_RETURN_IF_ERROR(encoder->SetAttributePredictionScheme(att_id, method));
+  }
+  return OkStatus();
+}
+
+}  // namespace
+
 Status ConfigureUvCompressionForGltf(
     const Mesh &mesh, ExpertEncoder &encoder,
     std::set<std::string> *extensions_used,
@@ -47,6 +95,12 @@ Status ConfigureUvCompressionForGltf(
   // quiet.
   DRACO_RETURN_IF_ERROR(
       ConfigureUvPrediction(options.prediction, &mesh, &encoder).status());
+  if (IsAutoUvPrediction(options.prediction) &&
+      extensions_required->count(kUvGltfExtension) == 0 &&
+      UsesDracoUvScheme(mesh, encoder)) {
+    DRACO_RETURN_IF_ERROR(
+        KeepDracoUvOnlyIfItPaysForTheExtension(mesh, &encoder));
+  }
   if (UsesDracoUvScheme(mesh, encoder)) {
     extensions_used->insert(kUvGltfExtension);
     extensions_required->insert(kUvGltfExtension);

@@ -38,7 +38,10 @@ namespace draco {
 // and V already flipped to glTF's convention (the coders infer UV
 // orientation from the data, so the mirror costs nothing). When a TEX_COORD
 // attribute ends up with a draco-uv scheme, adds kUvGltfExtension to
-// |extensions_used| and |extensions_required|. Stock options change nothing.
+// |extensions_used| and |extensions_required|. With -uv_pred auto, the first
+// primitive that would need the extension keeps draco-uv's schemes only if
+// they save more bytes than the extension adds to the JSON, so auto never
+// makes a file bigger than stock coding. Stock options change nothing.
 //
 // Draco 1.5.5 holds the encoder by value and 1.5.7 and newer in a
 // unique_ptr; one overload each keeps the hook's text the same in both.

@@ -13,7 +13,9 @@
 #  3. Apart from the extension and buffer sizes, its JSON is the stock
 #     output's: materials, KHR_texture_transform, skins and animations are
 #     untouched.
-#  4. A stock-coded file that requires the extension is refused by the stock
+#  4. With -uv_pred auto, no .gltf (with its .bin) or .glb output is bigger
+#     than the stock transcoder's, the draco-uv extension's JSON included.
+#  5. A stock-coded file that requires the extension is refused by the stock
 #     reader naming it ("... is unsupported.") and read by ours.
 #
 #   gltf_transcoder_test.sh OUR_TRANSCODER OUR_ENCODER OUR_UV_EVAL DRACO_TESTDATA
@@ -29,7 +31,7 @@ done
 
 work=$(mktemp -d)
 trap 'rm -rf "${work}"' EXIT
-failures=0 identical=0 refused=0 read_back=0
+failures=0 identical=0 refused=0 read_back=0 auto_not_bigger=0
 fail() { echo "FAIL: $*"; failures=$((failures + 1)); }
 
 # Transcodes $2 into folder $1 as out.$3 with the remaining arguments.
@@ -62,6 +64,18 @@ for asset in "${assets[@]}"; do
     fi
   done
   [[ ${stock_status} -eq 0 ]] || continue
+
+  for ext in gltf glb; do
+    transcode "${our_transcoder}" "${work}/auto_${ext}" "${input}" "${ext}" -uv_pred auto ||
+      { fail "${asset} .${ext}: -uv_pred auto failed"; continue; }
+    auto_bytes=$(du -bc "${work}/auto_${ext}"/* | tail -1 | cut -f1)
+    stock_bytes=$(du -bc "${work}/stock_${ext}"/* | tail -1 | cut -f1)
+    if [[ ${auto_bytes} -le ${stock_bytes} ]]; then
+      auto_not_bigger=$((auto_not_bigger + 1))
+    else
+      fail "${asset} .${ext}: -uv_pred auto ${auto_bytes} bytes, stock ${stock_bytes}"
+    fi
+  done
 
   transcode "${our_transcoder}" "${work}/uv" "${input}" gltf -uv_pred weighted ||
     { fail "${asset}: -uv_pred weighted failed: $(tail -1 "${work}/uv.log")"; continue; }
@@ -101,7 +115,7 @@ for asset in "${assets[@]}"; do
   fi
 done
 
-# 4. The extension alone, on stock-coded data.
+# 5. The extension alone, on stock-coded data.
 truck="${draco_testdata}/CesiumMilkTruck/glTF/CesiumMilkTruck.gltf"
 transcode "${our_transcoder}" "${work}/marked" "${truck}" gltf
 python3 "${gltf_json}" add "${work}/marked/out.gltf" "${extension}" "${work}/marked/marked.gltf"
@@ -113,5 +127,7 @@ grep -q "${extension} is unsupported" "${work}/marked.log" ||
   >"${work}/marked.log" 2>&1 || fail "our draco_transcoder refused ${extension}"
 
 echo "byte-identical outputs: ${identical}; files refused by stock: ${refused};" \
-  "read back by our tools: ${read_back}; failures: ${failures}"
-[[ ${identical} -ge 100 && ${refused} -ge 40 && ${read_back} -ge 35 && ${failures} -eq 0 ]]
+  "read back by our tools: ${read_back}; auto not bigger than stock:" \
+  "${auto_not_bigger}; failures: ${failures}"
+[[ ${identical} -ge 100 && ${refused} -ge 40 && ${read_back} -ge 35 &&
+   ${auto_not_bigger} -ge 100 && ${failures} -eq 0 ]]
