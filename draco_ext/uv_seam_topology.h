@@ -49,8 +49,6 @@ class UvSeamTopology {
   int num_edges() const { return static_cast<int>(edge_corner_.size()); }
   int num_vertices() const { return static_cast<int>(ring_begin_.size()) - 1; }
 
-  // Interior edge opposite |corner|, or kBoundary.
-  int32_t EdgeOfCorner(int32_t corner) const { return corner_edge_[corner]; }
   // The smaller of the two corners opposite |edge|.
   int32_t EdgeCorner(int32_t edge) const { return edge_corner_[edge]; }
   // The two vertices of |edge|.
