@@ -48,7 +48,8 @@ def summary(table, kinds):
              "| ---: | --- | --- | ---: | ---: | ---: | ---: | ---: |"]
     for qt in (10, 12):
         meshes = real_meshes(table, kinds, qt)
-        for scheme in ("weighted", "weighted_multi", "auto"):
+        for scheme in ("weighted", "weighted_multi", "auto", "auto+context",
+                       "weighted_multi+context"):
             groups = defaultdict(list)
             for mesh in meshes:
                 value = ratio(table[(mesh, qt)][scheme])
@@ -67,10 +68,11 @@ def summary(table, kinds):
 def per_mesh(table, kinds, qt):
     lines = [
         "| mesh | kind | UV vertices | stock UV bytes | stock bpv | auto UV bytes"
-        " | auto bpv | auto ratio | weighted | weighted_multi | enc ms stock / auto"
-        " | dec ms stock / auto | dec ratio |",
+        " | auto bpv | auto ratio | weighted | weighted_multi | auto+context"
+        " | weighted_multi+context | enc ms stock / auto | dec ms stock / auto"
+        " | dec ratio |",
         "| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: "
-        "| ---: | ---: |"]
+        "| ---: | ---: | ---: | ---: |"]
     for mesh in sorted(m for (m, q) in table if q == qt):
         cell = table[(mesh, qt)]
         stock, auto = cell["draco"], cell["auto"]
@@ -80,6 +82,8 @@ def per_mesh(table, kinds, qt):
             f"{auto['uv_bytes']} | {float(auto['bpv']):.2f} | "
             f"{ratio(auto):.3f} | {ratio(cell['weighted']):.3f} | "
             f"{ratio(cell['weighted_multi']):.3f} | "
+            f"{ratio(cell['auto+context']):.3f} | "
+            f"{ratio(cell['weighted_multi+context']):.3f} | "
             f"{float(stock['enc_ms']):.1f} / {float(auto['enc_ms']):.1f} | "
             f"{float(stock['dec_ms']):.2f} / {float(auto['dec_ms']):.2f} | "
             f"{dec_ratio(cell):.2f} |")

@@ -14,7 +14,7 @@ cd "$(dirname "$0")/.."
 corpus=${1:-../shared/corpus}
 build=${2:-build}
 out=benchmarks
-schemes=draco,parallelogram,portable,multi_parallelogram,weighted,weighted_multi,auto
+schemes=draco,parallelogram,portable,multi_parallelogram,weighted,weighted_multi,auto,auto+context,weighted_multi+context
 mkdir -p "${out}"
 
 "${build}/draco/draco_uv_eval" "${corpus}/meshes" --qt 8,10,12 --qp 14 --cl 10 \
