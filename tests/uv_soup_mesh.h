@@ -123,7 +123,7 @@ struct UvRoundTrip {
 };
 
 // Encodes |mesh| with |settings| and, unless |with_stock| is false, with
-// stock Draco (settings.uv_pred empty), decodes both and compares the
+// stock Draco (settings.uv_pred and uv_seams empty), decodes both and compares the
 // decoded meshes corner by corner.
 inline UvRoundTrip RoundTripAgainstStock(const Mesh &mesh,
                                          const UvEncodeSettings &settings,
@@ -141,6 +141,7 @@ inline UvRoundTrip RoundTripAgainstStock(const Mesh &mesh,
   }
   UvEncodeSettings stock_settings = settings;
   stock_settings.uv_pred.clear();
+  stock_settings.uv_seams.clear();
   EncoderBuffer stock;
   if (!EncodeMeshWithSettings(mesh, stock_settings, &stock).ok()) {
     return result;
