@@ -131,8 +131,11 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
     return 0;
   }
   const auto method = draco::ParseUvPredictionName(settings.uv_pred);
+  // Without texture coordinates a draco-uv name changes nothing: the mesh
+  // is stock Draco's to encode.
   const bool draco_uv_scheme =
-      method.ok() && draco::IsDracoUvPredictionMethod(method.value());
+      method.ok() && draco::IsDracoUvPredictionMethod(method.value()) &&
+      mesh->NumNamedAttributes(draco::GeometryAttribute::TEX_COORD) > 0;
   const bool non_finite =
       draco::HasNonFiniteValue(*mesh, draco::GeometryAttribute::POSITION) ||
       draco::HasNonFiniteValue(*mesh, draco::GeometryAttribute::TEX_COORD);
