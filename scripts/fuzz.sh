@@ -5,8 +5,9 @@
 #
 #   scripts/fuzz.sh build            configure and build the sanitizer build
 #   scripts/fuzz.sh run [SECONDS]    every target for SECONDS (default 60)
-#   scripts/fuzz.sh smoke [SECONDS]  every target for SECONDS (default 4);
-#                                    exits 77 (skipped) without the build
+#   scripts/fuzz.sh smoke [SECONDS]  every target but decode:stock for SECONDS
+#                                    (default 4); exits 77 (skipped) without
+#                                    the build
 #
 # Targets (tests/fuzz/):
 #   decode:NAME  draco_uv_decode_fuzzer, one per row NAME of
@@ -96,10 +97,12 @@ run_target() {
   [[ ${status} -eq 0 ]]
 }
 
+# run_all SECONDS [SKIPPED_VARIANT]
 run_all() {
-  local seconds=$1 bin="${FUZZ_BUILD_DIR}/tests/fuzz" failures=0 name
+  local seconds=$1 skipped=${2:-} bin="${FUZZ_BUILD_DIR}/tests/fuzz" failures=0 name
   printf '%-34s %6s %12s %8s %8s\n' target seconds executions corpus crashes
   for name in $(variant_names); do
+    [[ "${name}" != "${skipped}" ]] || continue
     local seeds="${FUZZ_BUILD_DIR}/seeds/${name}"
     rm -rf "${seeds}" && mkdir -p "${seeds}"
     cp testdata/golden/*."${name}".drc "${seeds}/" 2>/dev/null ||
@@ -134,7 +137,10 @@ main() {
         exit 77
       fi
       build >/dev/null  # Brings the targets up to date (a no-op if they are).
-      run_all "${2:-4}"
+      # Not stock Draco's own decoder: its known slow input (a 2^31
+      # orientation count, benchmarks/hostile.md) times out under ASan
+      # within seconds and would make the test command flaky.
+      run_all "${2:-4}" stock
       ;;
     *) die "usage: $0 build | run [SECONDS] | smoke [SECONDS]" ;;
   esac
