@@ -18,6 +18,7 @@
 #include <cstring>
 
 #include "draco/compression/draco_compression_options.h"
+#include "draco_ext/uv_laplacian_options.h"
 #include "draco_ext/uv_prediction_options.h"
 #include "draco_ext/uv_seam_options.h"
 
@@ -27,6 +28,7 @@ namespace {
 
 constexpr char kPredictionFlag[] = "-uv_pred";
 constexpr char kSeamsFlag[] = "-uv_seams";
+constexpr char kAnchorsFlag[] = "-uv_anchors";
 
 // Also stock for -uv_seams: "draco" is the stock name of both flags.
 bool IsStockPredictionName(const std::string &name) {
@@ -70,6 +72,19 @@ Status CheckUvPrediction(const DracoCompressionOptions &options) {
   return OkStatus();
 }
 
+Status CheckUvAnchors(const DracoCompressionOptions &options) {
+  if (options.uv.anchors.empty()) {
+    return OkStatus();
+  }
+  DRACO_RETURN_IF_ERROR(ParseUvAnchorSpec(options.uv.anchors).status());
+  if (!IsUvLaplacianName(options.uv.prediction)) {
+    return ErrorStatus(
+        "-uv_anchors needs -uv_pred laplacian_tutte, laplacian_cotan or "
+        "laplacian_mv.");
+  }
+  return OkStatus();
+}
+
 }  // namespace
 
 bool UvCompressionOptions::IsStock() const {
@@ -78,12 +93,14 @@ bool UvCompressionOptions::IsStock() const {
 
 Status CheckUvCompressionOptions(const DracoCompressionOptions &options) {
   DRACO_RETURN_IF_ERROR(CheckUvPrediction(options));
+  DRACO_RETURN_IF_ERROR(CheckUvAnchors(options));
   return CheckUvSeams(options);
 }
 
 bool IsUvCompressionFlag(const char *arg) {
   return std::strcmp(arg, kPredictionFlag) == 0 ||
-         std::strcmp(arg, kSeamsFlag) == 0;
+         std::strcmp(arg, kSeamsFlag) == 0 ||
+         std::strcmp(arg, kAnchorsFlag) == 0;
 }
 
 Status ParseUvCompressionFlag(int argc, char **argv, int *index,
@@ -96,6 +113,11 @@ Status ParseUvCompressionFlag(int argc, char **argv, int *index,
   if (flag == kSeamsFlag) {
     DRACO_RETURN_IF_ERROR(ParseUvSeamCodingName(value).status());
     options->seams = value;
+    return OkStatus();
+  }
+  if (flag == kAnchorsFlag) {
+    DRACO_RETURN_IF_ERROR(ParseUvAnchorSpec(value).status());
+    options->anchors = value;
     return OkStatus();
   }
   DRACO_RETURN_IF_ERROR(ParseUvPredictionName(value).status());

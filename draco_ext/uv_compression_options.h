@@ -45,12 +45,16 @@ struct UvCompressionOptions {
   // A -uv_seams name (uv_seam_options.h); empty or "draco" keeps stock
   // Draco's seam coding.
   std::string seams;
+  // A -uv_anchors value (uv_laplacian_options.h) for the Laplacian
+  // -uv_pred names; empty keeps the default 50 greedy anchors.
+  std::string anchors;
 
   // True when no draco-uv feature is requested.
   bool IsStock() const;
 
   bool operator==(const UvCompressionOptions &other) const {
-    return prediction == other.prediction && seams == other.seams;
+    return prediction == other.prediction && seams == other.seams &&
+           anchors == other.anchors;
   }
   bool operator!=(const UvCompressionOptions &other) const {
     return !(*this == other);
@@ -61,7 +65,8 @@ struct UvCompressionOptions {
 // and for anything but stock Draco Edgebreaker encoding (compression level
 // 1 or more), quantized texture coordinates and, for the methods that need
 // them, quantized positions; a known -uv_seams name, and for context
-// Edgebreaker encoding. Called by DracoCompressionOptions::Check().
+// Edgebreaker encoding; a valid -uv_anchors value, only with a Laplacian
+// -uv_pred name. Called by DracoCompressionOptions::Check().
 Status CheckUvCompressionOptions(const DracoCompressionOptions &options);
 
 // Command-line flags of draco-uv for tools built on DracoCompressionOptions

@@ -15,6 +15,7 @@
 #include "draco_ext/uv_laplacian_options.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdlib>
 
 #include "draco_ext/uv_laplacian_coder.h"
@@ -40,17 +41,59 @@ constexpr LaplacianName kLaplacianNames[] = {
     {"laplacian_mv", UvLaplacianKind::kMeanValue},
 };
 
+constexpr int kMaxAnchors = 1 << 24;
+
 bool ParseCount(const std::string &text, int *count) {
   char *end = nullptr;
   const long value = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || value < 0 || value > (1 << 24)) {
+  if (text.empty() || *end != '\0' || value < 0 || value > kMaxAnchors) {
     return false;
   }
   *count = static_cast<int>(value);
   return true;
 }
 
+// "P%" with 0 <= P <= 100 (decimals allowed).
+bool ParsePercent(const std::string &text, double *percent) {
+  if (text.size() < 2 || text.back() != '%') {
+    return false;
+  }
+  const std::string number = text.substr(0, text.size() - 1);
+  char *end = nullptr;
+  const double value = std::strtod(number.c_str(), &end);
+  if (*end != '\0' || !(value >= 0.0 && value <= 100.0)) {
+    return false;
+  }
+  *percent = value;
+  return true;
+}
+
+// K for an attribute of |num_values| texture coordinates; a percentage is
+// rounded up, so that any positive one gives at least one anchor.
+int AnchorCount(const UvAnchorSpec &spec, int64_t num_values) {
+  if (!spec.is_percent) {
+    return spec.count;
+  }
+  const double count = std::ceil(spec.percent / 100.0 * num_values);
+  return static_cast<int>(std::min<double>(count, kMaxAnchors));
+}
+
 }  // namespace
+
+StatusOr<UvAnchorSpec> ParseUvAnchorSpec(const std::string &spec) {
+  UvAnchorSpec parsed;
+  parsed.random = spec.rfind(kRandomPrefix, 0) == 0;
+  const std::string amount =
+      parsed.random ? spec.substr(sizeof(kRandomPrefix) - 1) : spec;
+  parsed.is_percent = ParsePercent(amount, &parsed.percent);
+  if (!parsed.is_percent && !ParseCount(amount, &parsed.count)) {
+    return Status(Status::DRACO_ERROR,
+                  "Bad -uv_anchors value '" + spec +
+                      "': use K, P% or random:K, random:P% (K >= 0, "
+                      "0 <= P <= 100).");
+  }
+  return parsed;
+}
 
 bool IsLossyUvPrediction(PredictionSchemeMethod method) {
   return method == MESH_PREDICTION_TEX_COORDS_LAPLACIAN;
@@ -92,13 +135,7 @@ Status ConfigureUvAnchors(const std::string &spec, const Mesh *mesh,
   if (spec.empty()) {
     return OkStatus();
   }
-  const bool random = spec.rfind(kRandomPrefix, 0) == 0;
-  int count;
-  if (!ParseCount(random ? spec.substr(sizeof(kRandomPrefix) - 1) : spec,
-                  &count)) {
-    return Status(Status::DRACO_ERROR, "Bad -uv_anchors value '" + spec +
-                                           "': use K or random:K, K >= 0.");
-  }
+  DRACO_ASSIGN_OR_RETURN(const UvAnchorSpec parsed, ParseUvAnchorSpec(spec));
   bool applied = false;
   for (int i = 0; mesh != nullptr &&
                   i < mesh->NumNamedAttributes(GeometryAttribute::TEX_COORD);
@@ -109,10 +146,11 @@ Status ConfigureUvAnchors(const std::string &spec, const Mesh *mesh,
         MESH_PREDICTION_TEX_COORDS_LAPLACIAN) {
       continue;
     }
-    encoder->options().SetAttributeInt(att_id, kUvLaplacianAnchorsOption,
-                                       count);
+    encoder->options().SetAttributeInt(
+        att_id, kUvLaplacianAnchorsOption,
+        AnchorCount(parsed, mesh->attribute(att_id)->size()));
     encoder->options().SetAttributeInt(att_id, kUvLaplacianRandomAnchorsOption,
-                                       random ? 1 : 0);
+                                       parsed.random ? 1 : 0);
     applied = true;
   }
   if (!applied) {
@@ -126,8 +164,12 @@ Status ConfigureUvAnchors(const std::string &spec, const Mesh *mesh,
 std::string UvAnchorsUsage() {
   return "  -uv_anchors <K>       extra anchors of -uv_pred laplacian_*, "
          "chosen\n"
-         "                          greedily (default 50); random:<K> "
-         "picks them at random\n";
+         "                          greedily (default 50); <P>% scales them "
+         "with the mesh\n"
+         "                          (P percent of its texture coordinates, "
+         "e.g. 2%);\n"
+         "                          random:<K> or random:<P>% picks them at "
+         "random\n";
 }
 
 }  // namespace draco

@@ -17,8 +17,9 @@
 //   -uv_pred laplacian_tutte | laplacian_cotan | laplacian_mv
 //       the Laplacian (eq. 6-8 of [Váša & Brunnett 2014]); -qt sets the
 //       quantisation step of its residuals, range / (2^qt - 1);
-//   -uv_anchors K | random:K
-//       K extra anchors, greedy by largest error (default 50) or random.
+//   -uv_anchors K | P% | random:K | random:P%
+//       K extra anchors, greedy by largest error (default 50) or random;
+//       P% sets K to P percent of the attribute's texture coordinates.
 // Lossy: -uv_pred auto never picks these names.
 #ifndef DRACO_EXT_UV_LAPLACIAN_OPTIONS_H_
 #define DRACO_EXT_UV_LAPLACIAN_OPTIONS_H_
@@ -28,6 +29,7 @@
 #include "draco/compression/config/compression_shared.h"
 #include "draco/compression/expert_encode.h"
 #include "draco/core/status.h"
+#include "draco/core/status_or.h"
 #include "draco/mesh/mesh.h"
 
 namespace draco {
@@ -47,9 +49,22 @@ bool IsUvLaplacianName(const std::string &name);
 Status ConfigureUvLaplacian(const std::string &name, int att_id,
                             ExpertEncoder *encoder);
 
-// Applies -uv_anchors |spec| ("K" or "random:K", K >= 0) to every
-// TEX_COORD attribute of |mesh| that uses the Laplacian scheme. An empty
-// spec changes nothing; a spec without such an attribute is an error.
+// A parsed -uv_anchors value.
+struct UvAnchorSpec {
+  bool random = false;
+  bool is_percent = false;
+  int count = 0;        // K, when !is_percent.
+  double percent = 0;   // P, when is_percent.
+};
+
+// Parses "K", "P%", "random:K" or "random:P%" (0 <= K <= 2^24,
+// 0 <= P <= 100).
+StatusOr<UvAnchorSpec> ParseUvAnchorSpec(const std::string &spec);
+
+// Applies -uv_anchors |spec| (ParseUvAnchorSpec()) to every TEX_COORD
+// attribute of |mesh| that uses the Laplacian scheme; P% becomes
+// ceil(P / 100 * the attribute's number of values). An empty spec changes
+// nothing; a spec without such an attribute is an error.
 Status ConfigureUvAnchors(const std::string &spec, const Mesh *mesh,
                           ExpertEncoder *encoder);
 

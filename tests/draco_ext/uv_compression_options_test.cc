@@ -138,6 +138,30 @@ TEST(UvCompressionFlagTest, ParsesUvSeamsNextToUvPred) {
   EXPECT_FALSE(Parse({"tool", "-uv_seams", "static"}, &options, &index).ok());
 }
 
+TEST(UvCompressionFlagTest, ParsesUvAnchorsForTheLaplacianCoder) {
+  EXPECT_TRUE(IsUvCompressionFlag("-uv_anchors"));
+  UvCompressionOptions options;
+  int index = 1;
+  ASSERT_TRUE(Parse({"tool", "-uv_anchors", "2%"}, &options, &index).ok());
+  EXPECT_EQ(options.anchors, "2%");
+  EXPECT_EQ(index, 2);
+  index = 1;
+  EXPECT_FALSE(Parse({"tool", "-uv_anchors", "many"}, &options, &index).ok());
+  EXPECT_NE(UvCompressionUsage().find("-uv_anchors"), std::string::npos);
+}
+
+TEST(UvCompressionOptionsTest, CheckAnchorsNeedALaplacianScheme) {
+  DracoCompressionOptions options = WithPrediction("laplacian_mv");
+  options.uv.anchors = "random:100";
+  EXPECT_TRUE(options.Check().ok());
+  EXPECT_NE(options, WithPrediction("laplacian_mv"));
+  options.uv.prediction = "weighted";
+  EXPECT_FALSE(options.Check().ok());
+  options.uv.prediction = "laplacian_cotan";
+  options.uv.anchors = "-5";
+  EXPECT_FALSE(options.Check().ok());
+}
+
 TEST(UvCompressionOptionsTest, CheckSeamsNeedKnownNameAndEdgebreaker) {
   DracoCompressionOptions options;
   options.uv.seams = "draco";

@@ -93,6 +93,39 @@ TEST_F(UvGltfEncoderTest, StockOptionsChangeNeitherBitstreamNorExtensions) {
   EXPECT_TRUE(required_.empty());
 }
 
+TEST_F(UvGltfEncoderTest, AnchorsReachTheLaplacianCoder) {
+  std::vector<std::vector<char>> streams;
+  for (const std::string anchors : {"", "50", "0"}) {
+    const std::unique_ptr<ExpertEncoder> encoder = MakeEncoder("laplacian_mv");
+    DracoCompressionOptions options = mesh_->GetCompressionOptions();
+    options.uv.anchors = anchors;
+    mesh_->SetCompressionOptions(options);
+    ASSERT_TRUE(
+        ConfigureUvCompressionForGltf(*mesh_, *encoder, &used_, &required_)
+            .ok())
+        << anchors;
+    streams.push_back(Encode(encoder.get()));
+  }
+  EXPECT_EQ(streams[0], streams[1]);  // 50 greedy anchors is the default.
+  EXPECT_NE(streams[0], streams[2]);
+}
+
+// Like a primitive of a multi-primitive asset that has no texture
+// coordinates: it ignores -uv_anchors instead of failing the transcode.
+TEST_F(UvGltfEncoderTest, AnchorsIgnorePrimitivesWithoutTexCoords) {
+  while (mesh_->NumNamedAttributes(GeometryAttribute::TEX_COORD) > 0) {
+    mesh_->DeleteAttribute(
+        mesh_->GetNamedAttributeId(GeometryAttribute::TEX_COORD, 0));
+  }
+  const std::unique_ptr<ExpertEncoder> encoder = MakeEncoder("laplacian_mv");
+  DracoCompressionOptions options = mesh_->GetCompressionOptions();
+  options.uv.anchors = "2%";
+  mesh_->SetCompressionOptions(options);
+  EXPECT_TRUE(
+      ConfigureUvCompressionForGltf(*mesh_, *encoder, &used_, &required_)
+          .ok());
+}
+
 TEST_F(UvGltfEncoderTest, ExtensionIsRequiredExactlyForDracoUvSchemes) {
   for (const std::string name :
        {"draco", "parallelogram", "portable", "weighted"}) {

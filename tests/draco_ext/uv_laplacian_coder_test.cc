@@ -448,6 +448,31 @@ TEST(UvLaplacianSchemeTest, AnchorOptionChangesTheStream) {
   EXPECT_LT(sizes["0"], sizes["50"]);
 }
 
+// P% means ceil(P / 100 * the attribute's texture coordinates) anchors.
+TEST(UvLaplacianSchemeTest, PercentAnchorsScaleWithTheMesh) {
+  auto mesh = ReadTestMesh(UvTestdataPath("torus_uv.obj"));
+  ASSERT_TRUE(mesh.ok());
+  const int64_t num_values =
+      mesh.value()->GetNamedAttribute(GeometryAttribute::TEX_COORD)->size();
+  for (const int percent : {1, 5, 20}) {
+    const int count = static_cast<int>((percent * num_values + 99) / 100);
+    for (const std::string prefix : {"", "random:"}) {
+      const auto by_percent = EncodeMeshToBytes(
+          *mesh.value(), {14, 10, 10, "laplacian_mv", "",
+                          prefix + std::to_string(percent) + "%"});
+      const auto by_count = EncodeMeshToBytes(
+          *mesh.value(),
+          {14, 10, 10, "laplacian_mv", "", prefix + std::to_string(count)});
+      ASSERT_TRUE(by_percent.ok() && by_count.ok()) << prefix << percent;
+      EXPECT_EQ(by_percent.value(), by_count.value()) << prefix << percent;
+    }
+  }
+  for (const std::string bad : {"%", "101%", "-1%", "2.5.1%", "random:x%"}) {
+    EXPECT_FALSE(ParseUvAnchorSpec(bad).ok()) << bad;
+  }
+  EXPECT_TRUE(ParseUvAnchorSpec("0.5%").ok());
+}
+
 TEST(UvLaplacianSchemeTest, RejectsBadOptions) {
   auto mesh = ReadTestMesh(UvTestdataPath("torus_uv.obj"));
   ASSERT_TRUE(mesh.ok());
