@@ -18,6 +18,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <limits>
 #include <map>
 #include <unordered_map>
@@ -208,6 +209,24 @@ typedef std::map<std::array<int32_t, 9>, std::vector<std::pair<FaceIndex, int>>>
     FaceIndexByKey;
 
 }  // namespace
+
+std::vector<std::string> ListMeshFiles(const std::string &input) {
+  namespace fs = std::filesystem;
+  if (!fs::is_directory(input)) {
+    return {input};
+  }
+  std::vector<std::string> meshes;
+  for (const auto &entry : fs::directory_iterator(input)) {
+    std::string ext = entry.path().extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+    if (entry.is_regular_file() &&
+        (ext == ".obj" || ext == ".ply" || ext == ".gltf" || ext == ".glb")) {
+      meshes.push_back(entry.path().string());
+    }
+  }
+  std::sort(meshes.begin(), meshes.end());
+  return meshes;
+}
 
 int64_t CountUvVertices(const Mesh &mesh) {
   const PointAttribute *const position =

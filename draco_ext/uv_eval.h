@@ -78,6 +78,11 @@ struct UvEvalRow {
 // attributes: the texture vertices the paper counts.
 int64_t CountUvVertices(const Mesh &mesh);
 
+// The mesh files (.obj, .ply, .gltf, .glb in any case) of folder |input|,
+// sorted, or |input| itself when it is not a folder: what the evaluation
+// tools read.
+std::vector<std::string> ListMeshFiles(const std::string &input);
+
 // Bytes stock Draco's Edgebreaker spends on the seams of the TEX_COORD
 // attributes: one static-probability rANS bit per interior edge each.
 double StockSeamBytes(const Mesh &mesh);

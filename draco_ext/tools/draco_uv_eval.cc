@@ -14,7 +14,6 @@
 //
 // draco_uv_eval: how much each UV coder saves on a mesh or a folder of
 // meshes, in the terms of [Váša & Brunnett 2014] section 6.
-#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -138,28 +137,6 @@ bool ParseArgs(int argc, char **argv, Args *args) {
          !args->options.schemes.empty() && !args->options.seams.empty();
 }
 
-bool IsMeshFile(const fs::path &path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-  return ext == ".obj" || ext == ".ply" || ext == ".gltf" || ext == ".glb";
-}
-
-// The meshes of |input|: the file itself, or the mesh files of the folder.
-std::vector<fs::path> ListMeshes(const fs::path &input) {
-  std::vector<fs::path> meshes;
-  if (fs::is_directory(input)) {
-    for (const auto &entry : fs::directory_iterator(input)) {
-      if (entry.is_regular_file() && IsMeshFile(entry.path())) {
-        meshes.push_back(entry.path());
-      }
-    }
-    std::sort(meshes.begin(), meshes.end());
-  } else {
-    meshes.push_back(input);
-  }
-  return meshes;
-}
-
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -176,7 +153,8 @@ int main(int argc, char **argv) {
     fprintf(stderr, "Error: %s does not exist.\n", args.input.c_str());
     return 1;
   }
-  const std::vector<fs::path> meshes = ListMeshes(input);
+  const std::vector<std::string> files = draco::ListMeshFiles(args.input);
+  const std::vector<fs::path> meshes(files.begin(), files.end());
   if (meshes.empty()) {
     fprintf(stderr, "Error: no OBJ, PLY, glTF or GLB files in %s.\n",
             args.input.c_str());

@@ -17,7 +17,6 @@
 // connectivity (the seams of every non-position attribute) costs as
 // per-edge bits, per-vertex flags, stock Draco and draco-uv's
 // -uv_seams context (see draco_ext/uv_seam_stats.h).
-#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -25,6 +24,7 @@
 #include <vector>
 
 #include "draco/io/mesh_io.h"
+#include "draco_ext/uv_eval.h"
 #include "draco_ext/uv_seam_stats.h"
 
 namespace {
@@ -89,24 +89,6 @@ bool ParseArgs(int argc, char **argv, Args *args) {
   return !args->input.empty();
 }
 
-std::vector<fs::path> ListMeshes(const fs::path &input) {
-  std::vector<fs::path> meshes;
-  if (!fs::is_directory(input)) {
-    meshes.push_back(input);
-    return meshes;
-  }
-  for (const auto &entry : fs::directory_iterator(input)) {
-    std::string ext = entry.path().extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
-    if (entry.is_regular_file() &&
-        (ext == ".obj" || ext == ".ply" || ext == ".gltf" || ext == ".glb")) {
-      meshes.push_back(entry.path());
-    }
-  }
-  std::sort(meshes.begin(), meshes.end());
-  return meshes;
-}
-
 double Bpv(int64_t bytes, int64_t vertices) {
   return vertices > 0 ? 8.0 * bytes / vertices : 0.0;
 }
@@ -140,7 +122,8 @@ int main(int argc, char **argv) {
                ? 0
                : 1;
   }
-  const std::vector<fs::path> meshes = ListMeshes(args.input);
+  const std::vector<std::string> files = draco::ListMeshFiles(args.input);
+  const std::vector<fs::path> meshes(files.begin(), files.end());
   FILE *csv = nullptr;
   if (!args.csv.empty()) {
     csv = fopen(args.csv.c_str(), "w");
