@@ -19,11 +19,11 @@
 #include <filesystem>
 #include <fstream>
 #include <map>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "draco/io/mesh_io.h"
+#include "draco_ext/tools/uv_tool_args.h"
 #include "draco_ext/uv_eval.h"
 #include "draco_ext/uv_eval_report.h"
 
@@ -55,36 +55,14 @@ void Usage() {
       "  --seams LIST     -uv_seams names (draco, context), each with every\n"
       "                   scheme, default draco; a scheme may name its own\n"
       "                   as <scheme>+<seams>, e.g. weighted+context\n"
-      "  --uv_anchors K   -uv_anchors of the laplacian_* schemes (K or "
-      "random:K),\n"
-      "                   default 50 greedy\n"
+      "  --uv_anchors K   -uv_anchors of the laplacian_* schemes (K, P%, "
+      "random:K\n"
+      "                   or random:P%), default 50 greedy\n"
       "  --repeat N       timing runs (minimum reported), default 3\n"
       "  --csv FILE       one row per (mesh, scheme, qt)\n"
       "  --plot FILE      rate-distortion chart (PNG or SVG, needs python3 "
       "with matplotlib)\n"
       "  --quiet          no progress on stderr\n");
-}
-
-std::vector<std::string> SplitList(const std::string &list) {
-  std::vector<std::string> items;
-  std::stringstream stream(list);
-  std::string item;
-  while (std::getline(stream, item, ',')) {
-    if (!item.empty()) {
-      items.push_back(item);
-    }
-  }
-  return items;
-}
-
-bool ParseInt(const std::string &text, int *value) {
-  char *end = nullptr;
-  const long parsed = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || parsed < 0 || parsed > 30) {
-    return false;
-  }
-  *value = static_cast<int>(parsed);
-  return true;
 }
 
 bool ParseArgs(int argc, char **argv, Args *args) {
@@ -100,9 +78,9 @@ bool ParseArgs(int argc, char **argv, Args *args) {
       return false;
     } else if (flag == "--qt") {
       args->options.qt.clear();
-      for (const std::string &item : SplitList(argv[++i])) {
+      for (const std::string &item : draco::SplitUvToolList(argv[++i])) {
         int qt;
-        if (!ParseInt(item, &qt) || qt == 0) {
+        if (!draco::ParseUvToolSetting(item, &qt) || qt == 0) {
           fprintf(stderr, "Error: bad --qt value '%s'.\n", item.c_str());
           return false;
         }
@@ -112,14 +90,14 @@ bool ParseArgs(int argc, char **argv, Args *args) {
       int *target = flag == "--qp"   ? &args->options.qp
                     : flag == "--cl" ? &args->options.cl
                                      : &args->options.repeat;
-      if (!ParseInt(argv[++i], target)) {
+      if (!draco::ParseUvToolSetting(argv[++i], target)) {
         fprintf(stderr, "Error: bad %s value '%s'.\n", flag.c_str(), argv[i]);
         return false;
       }
     } else if (flag == "--schemes") {
-      args->options.schemes = SplitList(argv[++i]);
+      args->options.schemes = draco::SplitUvToolList(argv[++i]);
     } else if (flag == "--seams") {
-      args->options.seams = SplitList(argv[++i]);
+      args->options.seams = draco::SplitUvToolList(argv[++i]);
     } else if (flag == "--uv_anchors") {
       args->options.uv_anchors = argv[++i];
     } else if (flag == "--csv") {
@@ -143,10 +121,7 @@ int main(int argc, char **argv) {
   Args args;
   if (!ParseArgs(argc, argv, &args)) {
     Usage();
-    return argc > 1 && (std::string(argv[1]) == "-h" ||
-                        std::string(argv[1]) == "--help")
-               ? 0
-               : 1;
+    return draco::UvToolUsageExitCode(argc, argv);
   }
   const fs::path input(args.input);
   if (!fs::exists(input)) {

@@ -21,10 +21,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
 
+#include "draco_ext/tools/uv_tool_args.h"
 #include "draco_ext/uv_gltf_eval.h"
 
 namespace {
@@ -56,28 +56,6 @@ void Usage() {
       "  --quiet          no progress on stderr\n");
 }
 
-std::vector<std::string> SplitList(const std::string &list) {
-  std::vector<std::string> items;
-  std::stringstream stream(list);
-  std::string item;
-  while (std::getline(stream, item, ',')) {
-    if (!item.empty()) {
-      items.push_back(item);
-    }
-  }
-  return items;
-}
-
-bool ParseInt(const std::string &text, int *value) {
-  char *end = nullptr;
-  const long parsed = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || parsed < 0 || parsed > 30) {
-    return false;
-  }
-  *value = static_cast<int>(parsed);
-  return true;
-}
-
 bool ParseArgs(int argc, char **argv, Args *args) {
   draco::DracoCompressionOptions &compression = args->options.compression;
   for (int i = 1; i < argc; ++i) {
@@ -94,11 +72,11 @@ bool ParseArgs(int argc, char **argv, Args *args) {
       fprintf(stderr, "Error: %s needs a value.\n", flag.c_str());
       return false;
     } else if (flag == "--schemes") {
-      args->options.schemes = SplitList(argv[++i]);
+      args->options.schemes = draco::SplitUvToolList(argv[++i]);
     } else if (flag == "--csv") {
       args->csv = argv[++i];
     } else if (flag == "--qp" || flag == "--qt" || flag == "--cl") {
-      if (!ParseInt(argv[++i], &number)) {
+      if (!draco::ParseUvToolSetting(argv[++i], &number)) {
         fprintf(stderr, "Error: bad %s value '%s'.\n", flag.c_str(), argv[i]);
         return false;
       }
@@ -201,7 +179,7 @@ int main(int argc, char **argv) {
   Args args;
   if (!ParseArgs(argc, argv, &args)) {
     Usage();
-    return 1;
+    return draco::UvToolUsageExitCode(argc, argv);
   }
   const fs::path work_dir =
       fs::temp_directory_path() /

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "draco/io/mesh_io.h"
+#include "draco_ext/tools/uv_tool_args.h"
 #include "draco_ext/uv_eval.h"
 #include "draco_ext/uv_seam_stats.h"
 
@@ -52,16 +53,6 @@ void Usage() {
       "  --csv FILE  one row per mesh\n");
 }
 
-bool ParseInt(const char *text, int *value) {
-  char *end = nullptr;
-  const long parsed = std::strtol(text, &end, 10);
-  if (*text == '\0' || *end != '\0' || parsed < 0 || parsed > 30) {
-    return false;
-  }
-  *value = static_cast<int>(parsed);
-  return true;
-}
-
 bool ParseArgs(int argc, char **argv, Args *args) {
   for (int i = 1; i < argc; ++i) {
     const std::string flag = argv[i];
@@ -73,7 +64,7 @@ bool ParseArgs(int argc, char **argv, Args *args) {
       int *target = flag == "--cl"   ? &args->settings.cl
                     : flag == "--qp" ? &args->settings.qp
                                      : &args->settings.qt;
-      if (!ParseInt(argv[++i], target)) {
+      if (!draco::ParseUvToolSetting(argv[++i], target)) {
         fprintf(stderr, "Error: bad %s value '%s'.\n", flag.c_str(), argv[i]);
         return false;
       }
@@ -117,10 +108,7 @@ int main(int argc, char **argv) {
   Args args;
   if (!ParseArgs(argc, argv, &args)) {
     Usage();
-    return argc > 1 && (std::string(argv[1]) == "-h" ||
-                        std::string(argv[1]) == "--help")
-               ? 0
-               : 1;
+    return draco::UvToolUsageExitCode(argc, argv);
   }
   const std::vector<std::string> files = draco::ListMeshFiles(args.input);
   const std::vector<fs::path> meshes(files.begin(), files.end());
