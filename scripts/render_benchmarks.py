@@ -175,6 +175,7 @@ def main():
         "paper_table1": paper_table1(table, kinds),
         "paper_table2": paper_table2(table, kinds),
         "gltf": gltf(sys.argv[3]),
+        "decode_time": open(sys.argv[4]).read().strip(),
     }
     template = open(os.path.join(os.path.dirname(__file__),
                                  "benchmarks_template.md")).read()

@@ -33,8 +33,13 @@ done
 "${build}/draco/draco_uv_gltf_eval" "${build}/draco-patched/testdata" \
   --schemes auto,weighted_multi --csv "${out}/gltf.csv" --quiet >"${out}/gltf.txt"
 
+# Decoding time against stock Draco, interleaved in one process.
+"${build}/draco/draco_uv_decode_bench" "${corpus}/meshes" --qp 14 --qt 12 \
+  --cl 10 --schemes auto,weighted_multi --rounds 30 >"${out}/decode_time.md"
+
 python=/usr/bin/python3
 [[ -x ${python} ]] || python=python3
 "${python}" scripts/render_benchmarks.py "${out}/corpus.csv" \
-  "${corpus}/MANIFEST.tsv" "${out}/gltf.csv" >BENCHMARKS.md
+  "${corpus}/MANIFEST.tsv" "${out}/gltf.csv" "${out}/decode_time.md" \
+  >BENCHMARKS.md
 echo "wrote BENCHMARKS.md and ${out}/"
