@@ -32,16 +32,19 @@ constexpr int kLeafPoints = 32;
 }  // namespace
 
 // Nested dissection of the point graph [George & Liu 1978]: every subset is
-// split into its connected components, and a connected subset at the median
-// level of a breadth-first level structure rooted at a pseudo-peripheral
-// point. Points are appended to |order| children first, so that the order
+// split into its connected components, and a connected subset at a small
+// balanced separator (a level of a breadth-first level structure rooted at
+// a pseudo-peripheral point, or a cut across the structure's longest
+// extent), thinned. Points are appended to |order| children first, so that the order
 // in which nodes are created is a postorder of the dissection tree.
 class UvSparseCholesky::Dissection {
  public:
   explicit Dissection(const UvMatrixGraph &graph)
       : graph_(graph),
         label_(graph.size(), -1),
-        level_(graph.size(), -1) {}
+        level_(graph.size(), -1),
+        distance_(graph.size(), 0),
+        side_(graph.size(), 0) {}
 
   // Returns the index of the subtree's root in |nodes|.
   int Dissect(std::vector<int> points, std::vector<Node> *nodes,
@@ -74,7 +77,7 @@ class UvSparseCholesky::Dissection {
   }
 
   // A disconnected subset becomes its components (empty separator); a
-  // connected one loses the median level of its level structure.
+  // connected one loses a small separator near its middle.
   void Split(const std::vector<int> &points,
              std::vector<std::vector<int>> *parts,
              std::vector<int> *separator) {
@@ -101,17 +104,51 @@ class UvSparseCholesky::Dissection {
       reached.swap(next_reached);
       levels.swap(next_levels);
     }
-    // levels[l] is the end of level l in |reached|. The separator is the
-    // smallest level among those that leave 40-60% of the points before it.
+    // sides[i]: where reached[i] goes. The smaller of two balanced cuts,
+    // thinned.
+    std::vector<int8_t> sides;
+    const int level_cut = LevelCut(levels, &sides);
+    DistanceCut(reached, levels, label, level_cut, &sides);
+    ThinSeparator(reached, label, &sides);
+    std::vector<int> before, after;
+    for (size_t i = 0; i < reached.size(); ++i) {
+      std::vector<int> &target =
+          sides[i] == kBefore ? before : sides[i] == kAfter ? after : *separator;
+      target.push_back(reached[i]);
+    }
+    if (!before.empty()) {
+      parts->push_back(std::move(before));
+    }
+    if (!after.empty()) {
+      parts->push_back(std::move(after));
+    }
+  }
+
+  static constexpr int8_t kBefore = 0;
+  static constexpr int8_t kSeparator = 1;
+  static constexpr int8_t kAfter = 2;
+
+  // Whether a cut leaving |before| points before and |after| after a
+  // separator is balanced enough.
+  static bool Balanced(int64_t before, int64_t after) {
+    const int64_t parts = before + after;
+    return 5 * std::min(before, after) >= 2 * parts;
+  }
+
+  // The smallest level whose sides are balanced [George & Liu 1978];
+  // levels[l] is the end of level l in the level order. Returns the
+  // separator's size.
+  int LevelCut(const std::vector<int> &levels, std::vector<int8_t> *sides) {
     const int num_levels = static_cast<int>(levels.size());
-    const double total = static_cast<double>(reached.size());
+    const int total = levels.back();
     int best = -1;
+    int best_size = 0;
     for (int l = 1; l + 1 < num_levels; ++l) {
-      const double before = levels[l - 1] / total;
       const int size = levels[l] - levels[l - 1];
-      if (before >= 0.4 && before <= 0.6 &&
-          (best < 0 || size < levels[best] - levels[best - 1])) {
+      if (Balanced(levels[l - 1], total - levels[l]) &&
+          (best < 0 || size < best_size)) {
         best = l;
+        best_size = size;
       }
     }
     if (best < 0) {
@@ -121,14 +158,87 @@ class UvSparseCholesky::Dissection {
         ++best;
       }
     }
-    const int sep_begin = levels[best - 1];
-    const int sep_end = levels[best];
-    separator->assign(reached.begin() + sep_begin, reached.begin() + sep_end);
-    if (sep_begin > 0) {
-      parts->emplace_back(reached.begin(), reached.begin() + sep_begin);
+    sides->assign(total, kAfter);
+    std::fill(sides->begin(), sides->begin() + levels[best - 1], kBefore);
+    std::fill(sides->begin() + levels[best - 1], sides->begin() + levels[best],
+              kSeparator);
+    return levels[best] - levels[best - 1];
+  }
+
+  // A cut across the subset's longest extent: with d_a and d_b the
+  // distances from the root a and from the farthest point b of the level
+  // structure, f = d_a - d_b changes by at most 2 along an edge, so the
+  // points with f in {c, c + 1} separate f < c from f > c + 1. Unlike a
+  // level (a circle around a), the level sets of f run straight across
+  // the middle, which measured 5-60% fewer factor flops. Replaces |sides|
+  // when the smallest balanced such cut is smaller than |current_size|.
+  void DistanceCut(const std::vector<int> &reached,
+                   const std::vector<int> &levels, int label,
+                   int current_size, std::vector<int8_t> *sides) {
+    const int total = static_cast<int>(reached.size());
+    for (size_t l = 0, i = 0; l < levels.size(); ++l) {
+      for (; i < static_cast<size_t>(levels[l]); ++i) {
+        distance_[reached[i]] = static_cast<int>(l);
+      }
     }
-    if (sep_end < static_cast<int>(reached.size())) {
-      parts->emplace_back(reached.begin() + sep_end, reached.end());
+    std::vector<int> far_reached, far_levels;
+    LevelStructure(reached.back(), label, &far_reached, &far_levels);
+    const int offset = static_cast<int>(far_levels.size());
+    std::vector<int> histogram(levels.size() + far_levels.size() + 2, 0);
+    for (size_t l = 0, i = 0; l < far_levels.size(); ++l) {
+      for (; i < static_cast<size_t>(far_levels[l]); ++i) {
+        const int p = far_reached[i];
+        distance_[p] = distance_[p] - static_cast<int>(l) + offset;
+        ++histogram[distance_[p]];
+      }
+    }
+    int best = -1, best_size = 0, before = 0;
+    for (size_t c = 0; c + 1 < histogram.size(); ++c) {
+      const int size = histogram[c] + histogram[c + 1];
+      if (Balanced(before, total - before - size) &&
+          (best < 0 || size < best_size)) {
+        best = static_cast<int>(c);
+        best_size = size;
+      }
+      before += histogram[c];
+    }
+    if (best < 0 || best_size >= current_size) {
+      return;
+    }
+    for (int i = 0; i < total; ++i) {
+      const int f = distance_[reached[i]];
+      (*sides)[i] = f < best ? kBefore : f > best + 1 ? kAfter : kSeparator;
+    }
+  }
+
+  // Moves the separator's points without neighbours after it to before it,
+  // then those without neighbours before it to after it. A separator
+  // between two non-empty sides of a connected subset stays non-empty.
+  void ThinSeparator(const std::vector<int> &reached, int label,
+                     std::vector<int8_t> *sides) {
+    if (std::find(sides->begin(), sides->end(), kAfter) == sides->end()) {
+      return;
+    }
+    for (size_t i = 0; i < reached.size(); ++i) {
+      side_[reached[i]] = (*sides)[i];
+    }
+    for (const int8_t from : {kAfter, kBefore}) {
+      for (size_t i = 0; i < reached.size(); ++i) {
+        const int p = reached[i];
+        if (side_[p] != kSeparator) {
+          continue;
+        }
+        bool touches = false;
+        for (int e = graph_.start[p]; e < graph_.start[p + 1] && !touches;
+             ++e) {
+          const int q = graph_.neighbour[e];
+          touches = label_[q] == label && side_[q] == from;
+        }
+        if (!touches) {
+          side_[p] = static_cast<int8_t>(kAfter - from);
+          (*sides)[i] = side_[p];
+        }
+      }
     }
   }
 
@@ -178,6 +288,8 @@ class UvSparseCholesky::Dissection {
   const UvMatrixGraph &graph_;
   std::vector<int> label_;
   std::vector<int> level_;
+  std::vector<int> distance_;
+  std::vector<int8_t> side_;
   int next_label_ = 0;
   int next_stamp_ = 0;
 };

@@ -25,8 +25,10 @@
 //
 // The fill-reducing order is a nested dissection of the matrix graph
 // [George & Liu 1978]: connected components are dissected separately, and a
-// connected subset is cut at the smallest level near the median of a
-// breadth-first level structure from a pseudo-peripheral vertex. The
+// connected subset is cut at the smaller of two balanced separators, the
+// smallest level near the median of a breadth-first level structure from a
+// pseudo-peripheral vertex a, or a level set of d_a - d_b across the
+// subset (b the farthest vertex from a), and the separator is thinned. The
 // dissection tree is the assembly tree of a multifrontal factorisation:
 // every tree node is one dense front, factorised with Eigen's blocked dense
 // kernels. Eigen's own sparse Cholesky (simplicial, AMD order) measured
