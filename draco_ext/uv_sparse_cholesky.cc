@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <thread>
 #include <utility>
 
 #include <Eigen/Cholesky>
@@ -28,6 +29,9 @@ namespace {
 
 // Dissection stops at subsets of at most this many points (dense leaves).
 constexpr int kLeafPoints = 32;
+
+// Factorisations of fewer flops stay on one thread.
+constexpr double kMinThreadFlops = 1e8;
 
 }  // namespace
 
@@ -310,6 +314,14 @@ bool UvSparseCholesky::Analyze(const UvMatrixGraph &graph,
     column_of_[unknown_of_[column]] = column;
   }
   ComputeUpdateRows(graph);
+  parent_.assign(nodes_.size(), -1);
+  subtree_size_.assign(nodes_.size(), 1);
+  for (size_t i = 0; i < nodes_.size(); ++i) {
+    for (const int child : nodes_[i].children) {
+      parent_[child] = static_cast<int>(i);
+      subtree_size_[i] += subtree_size_[child];
+    }
+  }
   node_of_column_.assign(n, 0);
   int64_t offset = 0;
   for (size_t i = 0; i < nodes_.size(); ++i) {
@@ -388,75 +400,146 @@ bool UvSparseCholesky::Factorize(const UvSymmetricMatrix &matrix) {
       return false;
     }
   }
-  std::vector<int> front_index(num_unknowns(), -1);
   std::vector<std::vector<double>> updates(nodes_.size());
+  const int num_nodes = static_cast<int>(nodes_.size());
+  const int side = SideSubtree();
+  if (side < 0) {
+    return FactorizeNodes(matrix, 0, num_nodes, -1, -1, &updates);
+  }
+  // The side subtree (nodes side - size + 1 .. side in postorder) on a
+  // second thread, the other nodes before its parent on this one.
+  const int side_begin = side - subtree_size_[side] + 1;
+  bool side_ok = false;
+  std::thread worker([&] {
+    side_ok = FactorizeNodes(matrix, side_begin, side + 1, -1, -1, &updates);
+  });
+  const int join = parent_[side] < 0 ? num_nodes : parent_[side];
+  const bool ok =
+      FactorizeNodes(matrix, 0, join, side_begin, side + 1, &updates);
+  worker.join();
+  return ok && side_ok &&
+         FactorizeNodes(matrix, join, num_nodes, -1, -1, &updates);
+}
+
+int UvSparseCholesky::SideSubtree() const {
+  // prefix[i]: the work of nodes 0 .. i - 1 (postorder).
+  const int num_nodes = static_cast<int>(nodes_.size());
+  std::vector<double> subtree(num_nodes), prefix(num_nodes + 1, 0.0);
+  for (int i = 0; i < num_nodes; ++i) {
+    subtree[i] = NodeFlops(nodes_[i]);
+    for (const int child : nodes_[i].children) {
+      subtree[i] += subtree[child];
+    }
+    prefix[i + 1] = prefix[i] + NodeFlops(nodes_[i]);
+  }
+  if (max_threads_ < 2 || prefix[num_nodes] < kMinThreadFlops ||
+      std::thread::hardware_concurrency() < 2) {
+    return -1;
+  }
+  // Nodes from the side subtree's parent on run after the join.
+  int best = -1;
+  double best_time = prefix[num_nodes];
+  for (int i = 0; i < num_nodes; ++i) {
+    const double before_join = prefix[parent_[i] < 0 ? num_nodes : parent_[i]];
+    const double time = std::max(before_join - subtree[i], subtree[i]) +
+                        prefix[num_nodes] - before_join;
+    if (time < best_time) {
+      best = i;
+      best_time = time;
+    }
+  }
+  return best;
+}
+
+bool UvSparseCholesky::FactorizeNodes(
+    const UvSymmetricMatrix &matrix, int begin, int end, int skip_begin,
+    int skip_end, std::vector<std::vector<double>> *updates) {
+  std::vector<int> front_index(num_unknowns(), -1);
   std::vector<double> front_storage;
   std::vector<int> columns;
-  for (size_t n = 0; n < nodes_.size(); ++n) {
-    const Node &node = nodes_[n];
-    const int k = node.num_columns;
-    const int m = node.front_size();
-    FrontColumns(node, &columns);
-    for (int i = 0; i < m; ++i) {
-      front_index[columns[i]] = i;
+  for (int n = begin; n < end; ++n) {
+    if (n >= skip_begin && n < skip_end) {
+      continue;
     }
-    front_storage.assign(static_cast<size_t>(m) * m, 0.0);
-    Eigen::Map<Eigen::MatrixXd> front(front_storage.data(), m, m);
-    // The node's columns of the matrix (lower triangle in factor order).
-    for (int j = 0; j < k; ++j) {
-      const int column = node.first_column + j;
-      const int unknown = unknown_of_[column];
-      for (int e = matrix.column_start[unknown];
-           e < matrix.column_start[unknown + 1]; ++e) {
-        const int row_column = column_of_[matrix.row[e]];
-        if (row_column < column) {
-          continue;
-        }
-        const int local = front_index[row_column];
-        if (local < 0 || local >= m || columns[local] != row_column) {
-          return false;  // Not in the analysed pattern.
-        }
-        front(local, j) += matrix.value[e];
+    if (!FactorizeNode(matrix, n, &front_index, &front_storage, &columns,
+                       updates)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool UvSparseCholesky::FactorizeNode(
+    const UvSymmetricMatrix &matrix, int n, std::vector<int> *front_index_ptr,
+    std::vector<double> *front_storage_ptr, std::vector<int> *columns_ptr,
+    std::vector<std::vector<double>> *updates_ptr) {
+  std::vector<int> &front_index = *front_index_ptr;
+  std::vector<double> &front_storage = *front_storage_ptr;
+  std::vector<int> &columns = *columns_ptr;
+  std::vector<std::vector<double>> &updates = *updates_ptr;
+  const Node &node = nodes_[n];
+  const int k = node.num_columns;
+  const int m = node.front_size();
+  FrontColumns(node, &columns);
+  for (int i = 0; i < m; ++i) {
+    front_index[columns[i]] = i;
+  }
+  front_storage.assign(static_cast<size_t>(m) * m, 0.0);
+  Eigen::Map<Eigen::MatrixXd> front(front_storage.data(), m, m);
+  // The node's columns of the matrix (lower triangle in factor order).
+  for (int j = 0; j < k; ++j) {
+    const int column = node.first_column + j;
+    const int unknown = unknown_of_[column];
+    for (int e = matrix.column_start[unknown];
+         e < matrix.column_start[unknown + 1]; ++e) {
+      const int row_column = column_of_[matrix.row[e]];
+      if (row_column < column) {
+        continue;
+      }
+      const int local = front_index[row_column];
+      if (local < 0 || local >= m || columns[local] != row_column) {
+        return false;  // Not in the analysed pattern.
+      }
+      front(local, j) += matrix.value[e];
+    }
+  }
+  // Extend-add of the children's update matrices.
+  for (const int child : node.children) {
+    const std::vector<int> &rows = nodes_[child].update_rows;
+    const int size = static_cast<int>(rows.size());
+    Eigen::Map<const Eigen::MatrixXd> update(updates[child].data(), size,
+                                             size);
+    for (int a = 0; a < size; ++a) {
+      const int column = front_index[rows[a]];
+      for (int b = a; b < size; ++b) {
+        front(front_index[rows[b]], column) += update(b, a);
       }
     }
-    // Extend-add of the children's update matrices.
-    for (const int child : node.children) {
-      const std::vector<int> &rows = nodes_[child].update_rows;
-      const int size = static_cast<int>(rows.size());
-      Eigen::Map<const Eigen::MatrixXd> update(updates[child].data(), size,
-                                               size);
-      for (int a = 0; a < size; ++a) {
-        const int column = front_index[rows[a]];
-        for (int b = a; b < size; ++b) {
-          front(front_index[rows[b]], column) += update(b, a);
-        }
-      }
-      std::vector<double>().swap(updates[child]);
-    }
-    // Dense partial factorisation: L11 L11^T = F11, L21 = F21 L11^-T,
-    // update = F22 - L21 L21^T.
-    if (k > 0) {
-      Eigen::Ref<Eigen::MatrixXd> diagonal = front.topLeftCorner(k, k);
-      Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt(diagonal);
-      if (llt.info() != Eigen::Success ||
-          !diagonal.diagonal().allFinite()) {
-        return false;
-      }
-      if (m > k) {
-        auto below = front.bottomLeftCorner(m - k, k);
-        diagonal.transpose().triangularView<Eigen::Upper>()
-            .solveInPlace<Eigen::OnTheRight>(below);
-        front.bottomRightCorner(m - k, m - k)
-            .selfadjointView<Eigen::Lower>()
-            .rankUpdate(below, -1.0);
-      }
-      Panel(node) = front.leftCols(k);
+    std::vector<double>().swap(updates[child]);
+  }
+  // Dense partial factorisation: L11 L11^T = F11, L21 = F21 L11^-T,
+  // update = F22 - L21 L21^T.
+  if (k > 0) {
+    Eigen::Ref<Eigen::MatrixXd> diagonal = front.topLeftCorner(k, k);
+    Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt(diagonal);
+    if (llt.info() != Eigen::Success ||
+        !diagonal.diagonal().allFinite()) {
+      return false;
     }
     if (m > k) {
-      updates[n].resize(static_cast<size_t>(m - k) * (m - k));
-      Eigen::Map<Eigen::MatrixXd>(updates[n].data(), m - k, m - k) =
-          front.bottomRightCorner(m - k, m - k);
+      auto below = front.bottomLeftCorner(m - k, k);
+      diagonal.transpose().triangularView<Eigen::Upper>()
+          .solveInPlace<Eigen::OnTheRight>(below);
+      front.bottomRightCorner(m - k, m - k)
+          .selfadjointView<Eigen::Lower>()
+          .rankUpdate(below, -1.0);
     }
+    Panel(node) = front.leftCols(k);
+  }
+  if (m > k) {
+    updates[n].resize(static_cast<size_t>(m - k) * (m - k));
+    Eigen::Map<Eigen::MatrixXd>(updates[n].data(), m - k, m - k) =
+        front.bottomRightCorner(m - k, m - k);
   }
   return true;
 }

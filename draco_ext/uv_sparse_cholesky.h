@@ -72,8 +72,14 @@ class UvSparseCholesky {
   bool Analyze(const UvMatrixGraph &graph, int64_t max_entries);
 
   // Factorises |matrix| (pattern as analysed). False when the matrix is not
-  // numerically positive definite or has non-finite entries.
+  // numerically positive definite or has non-finite entries. Large
+  // factorisations put one subtree of the dissection tree on a second
+  // thread; every front's arithmetic is the same as on one thread, so the
+  // factor is bit-identical whatever the thread count and timing.
   bool Factorize(const UvSymmetricMatrix &matrix);
+
+  // At most 2 (the default) or 1 thread for Factorize().
+  void set_max_threads(int max_threads) { max_threads_ = max_threads; }
 
   // Replaces the factor of M by the factor of M + delta e_u e_u^T (rank-one
   // update, delta >= 0), touching only the columns on the elimination path
@@ -90,8 +96,7 @@ class UvSparseCholesky {
   double factor_flops() const {
     double flops = 0;
     for (const Node &node : nodes_) {
-      const double k = node.num_columns, r = node.update_rows.size();
-      flops += k * k * k / 3 + k * k * r + k * r * r;
+      flops += NodeFlops(node);
     }
     return flops;
   }
@@ -113,7 +118,27 @@ class UvSparseCholesky {
 
   class Dissection;
 
+  static double NodeFlops(const Node &node) {
+    const double k = node.num_columns, r = node.update_rows.size();
+    return k * k * k / 3 + k * k * r + k * r * r;
+  }
+
   void ComputeUpdateRows(const UvMatrixGraph &graph);
+  // The subtree to factorise on a second thread (its root node), or -1
+  // for one thread: the one that splits the work below its ancestors most
+  // evenly.
+  int SideSubtree() const;
+  // Factorises nodes begin .. end - 1 except skip_begin .. skip_end - 1, in
+  // order, with their own workspace. |updates| holds every node's update
+  // matrix until its parent has assembled it.
+  bool FactorizeNodes(const UvSymmetricMatrix &matrix, int begin, int end,
+                      int skip_begin, int skip_end,
+                      std::vector<std::vector<double>> *updates);
+  bool FactorizeNode(const UvSymmetricMatrix &matrix, int n,
+                     std::vector<int> *front_index,
+                     std::vector<double> *front_storage,
+                     std::vector<int> *columns,
+                     std::vector<std::vector<double>> *updates);
   // The front's global column numbers, own columns first.
   void FrontColumns(const Node &node, std::vector<int> *columns) const;
   Eigen::Map<Eigen::MatrixXd> Panel(const Node &node);
@@ -122,10 +147,13 @@ class UvSparseCholesky {
   void UpdateColumn(Node &node, int local, std::vector<double> *w);
 
   std::vector<Node> nodes_;         // Children before parents.
+  std::vector<int> parent_;         // Node -> parent node, -1 for roots.
+  std::vector<int> subtree_size_;   // Nodes in the subtree of a node.
   std::vector<int> column_of_;      // Unknown -> column.
   std::vector<int> unknown_of_;     // Column -> unknown.
   std::vector<int> node_of_column_;
   std::vector<double> panels_;
+  int max_threads_ = 2;
 };
 
 }  // namespace draco
