@@ -30,8 +30,10 @@ namespace {
 // Dissection stops at subsets of at most this many points (dense leaves).
 constexpr int kLeafPoints = 32;
 
-// Factorisations of fewer flops stay on one thread.
+// Factorisations of fewer flops, and dissections of fewer points, stay on
+// one thread.
 constexpr double kMinThreadFlops = 1e8;
+constexpr size_t kMinThreadPoints = 20000;
 
 }  // namespace
 
@@ -50,9 +52,12 @@ class UvSparseCholesky::Dissection {
         distance_(graph.size(), 0),
         side_(graph.size(), 0) {}
 
-  // Returns the index of the subtree's root in |nodes|.
-  int Dissect(std::vector<int> points, std::vector<Node> *nodes,
-              std::vector<int> *order) {
+  // Returns the index of the subtree's root in |nodes|. With |may_spawn|,
+  // the first split into two balanced groups of parts dissects the second
+  // group on another thread (with its own Dissection); the nodes and order
+  // are the same as on one thread.
+  int Dissect(std::vector<int> points, bool may_spawn,
+              std::vector<Node> *nodes, std::vector<int> *order) {
     if (points.size() <= static_cast<size_t>(kLeafPoints)) {
       std::sort(points.begin(), points.end());
       return AddNode(points, {}, nodes, order);
@@ -61,14 +66,78 @@ class UvSparseCholesky::Dissection {
     std::vector<int> separator;
     Split(points, &parts, &separator);
     std::vector<int> children;
-    for (std::vector<int> &part : parts) {
-      children.push_back(Dissect(std::move(part), nodes, order));
+    const size_t second = may_spawn ? SecondGroup(parts) : parts.size();
+    if (second < parts.size()) {
+      DissectOnTwoThreads(&parts, second, &children, nodes, order);
+    } else {
+      // Only the largest part may still spawn.
+      size_t largest = 0;
+      for (size_t i = 1; i < parts.size(); ++i) {
+        if (parts[i].size() > parts[largest].size()) {
+          largest = i;
+        }
+      }
+      for (size_t i = 0; i < parts.size(); ++i) {
+        children.push_back(Dissect(std::move(parts[i]),
+                                   may_spawn && i == largest, nodes, order));
+      }
     }
     std::sort(separator.begin(), separator.end());
     return AddNode(separator, std::move(children), nodes, order);
   }
 
  private:
+  // The first part of the second group when parts[0 .. i - 1] and the
+  // rest each hold at least a third of the points, else parts.size().
+  static size_t SecondGroup(const std::vector<std::vector<int>> &parts) {
+    size_t total = 0;
+    for (const std::vector<int> &part : parts) {
+      total += part.size();
+    }
+    size_t before = 0;
+    for (size_t i = 0; i < parts.size(); ++i) {
+      if (3 * before >= total && 3 * (total - before) >= total &&
+          total >= kMinThreadPoints) {
+        return i;
+      }
+      before += parts[i].size();
+    }
+    return parts.size();
+  }
+
+  void DissectOnTwoThreads(std::vector<std::vector<int>> *parts,
+                           size_t second, std::vector<int> *children,
+                           std::vector<Node> *nodes, std::vector<int> *order) {
+    std::vector<Node> side_nodes;
+    std::vector<int> side_order, side_roots;
+    std::thread worker([&] {
+      Dissection side(graph_);
+      for (size_t i = second; i < parts->size(); ++i) {
+        side_roots.push_back(side.Dissect(std::move((*parts)[i]), false,
+                                          &side_nodes, &side_order));
+      }
+    });
+    for (size_t i = 0; i < second; ++i) {
+      children->push_back(
+          Dissect(std::move((*parts)[i]), false, nodes, order));
+    }
+    worker.join();
+    // Renumber the second group's nodes and columns after the first's.
+    const int node_offset = static_cast<int>(nodes->size());
+    const int column_offset = static_cast<int>(order->size());
+    for (Node &node : side_nodes) {
+      node.first_column += column_offset;
+      for (int &child : node.children) {
+        child += node_offset;
+      }
+      nodes->push_back(std::move(node));
+    }
+    for (const int root : side_roots) {
+      children->push_back(root + node_offset);
+    }
+    order->insert(order->end(), side_order.begin(), side_order.end());
+  }
+
   static int AddNode(const std::vector<int> &points, std::vector<int> children,
                      std::vector<Node> *nodes, std::vector<int> *order) {
     Node node;
@@ -307,7 +376,10 @@ bool UvSparseCholesky::Analyze(const UvMatrixGraph &graph,
   std::vector<int> all(n);
   std::iota(all.begin(), all.end(), 0);
   if (n > 0) {
-    Dissection(graph).Dissect(std::move(all), &nodes_, &unknown_of_);
+    const bool may_spawn =
+        max_threads_ > 1 && std::thread::hardware_concurrency() > 1;
+    Dissection(graph).Dissect(std::move(all), may_spawn, &nodes_,
+                              &unknown_of_);
   }
   column_of_.assign(n, 0);
   for (int column = 0; column < n; ++column) {

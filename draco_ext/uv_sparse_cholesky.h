@@ -68,7 +68,8 @@ class UvSparseCholesky {
   // Orders the unknowns and computes the structure of the factor for
   // matrices whose off-diagonal entry (u, v) may be non-zero only when v is
   // a neighbour of u in |graph| (symmetric). False, before allocating the
-  // factor, when it would have more than |max_entries| entries.
+  // factor, when it would have more than |max_entries| entries. Large
+  // graphs are dissected on two threads, to the same order as on one.
   bool Analyze(const UvMatrixGraph &graph, int64_t max_entries);
 
   // Factorises |matrix| (pattern as analysed). False when the matrix is not
@@ -78,7 +79,8 @@ class UvSparseCholesky {
   // factor is bit-identical whatever the thread count and timing.
   bool Factorize(const UvSymmetricMatrix &matrix);
 
-  // At most 2 (the default) or 1 thread for Factorize().
+  // At most 2 (the default) or 1 thread for Analyze() and Factorize(); the
+  // order and factor do not depend on it.
   void set_max_threads(int max_threads) { max_threads_ = max_threads; }
 
   // Replaces the factor of M by the factor of M + delta e_u e_u^T (rank-one
