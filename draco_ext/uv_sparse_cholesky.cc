@@ -404,6 +404,12 @@ bool UvSparseCholesky::Analyze(const UvMatrixGraph &graph,
               node_of_column_.begin() + node.first_column + node.num_columns,
               static_cast<int>(i));
   }
+  side_ = SideSubtree();
+  if (side_ >= 0) {
+    side_begin_ = side_ - subtree_size_[side_] + 1;
+    join_ = parent_[side_] < 0 ? static_cast<int>(nodes_.size())
+                               : parent_[side_];
+  }
   if (offset > max_entries) {
     return false;
   }
@@ -474,23 +480,34 @@ bool UvSparseCholesky::Factorize(const UvSymmetricMatrix &matrix) {
   }
   std::vector<std::vector<double>> updates(nodes_.size());
   const int num_nodes = static_cast<int>(nodes_.size());
-  const int side = SideSubtree();
-  if (side < 0) {
+  if (side_ < 0) {
     return FactorizeNodes(matrix, 0, num_nodes, -1, -1, &updates);
   }
-  // The side subtree (nodes side - size + 1 .. side in postorder) on a
-  // second thread, the other nodes before its parent on this one.
-  const int side_begin = side - subtree_size_[side] + 1;
-  bool side_ok = false;
-  std::thread worker([&] {
-    side_ok = FactorizeNodes(matrix, side_begin, side + 1, -1, -1, &updates);
-  });
-  const int join = parent_[side] < 0 ? num_nodes : parent_[side];
-  const bool ok =
-      FactorizeNodes(matrix, 0, join, side_begin, side + 1, &updates);
+  // The side subtree and the other nodes before the join are independent.
+  bool side_ok = false, other_ok = false;
+  RunBoth(
+      [&] {
+        side_ok = FactorizeNodes(matrix, side_begin_, side_ + 1, -1, -1,
+                                 &updates);
+      },
+      [&] {
+        other_ok = FactorizeNodes(matrix, 0, join_, side_begin_, side_ + 1,
+                                  &updates);
+      });
+  return side_ok && other_ok &&
+         FactorizeNodes(matrix, join_, num_nodes, -1, -1, &updates);
+}
+
+template <typename Side, typename Other>
+void UvSparseCholesky::RunBoth(const Side &side, const Other &other) const {
+  if (max_threads_ < 2 || std::thread::hardware_concurrency() < 2) {
+    side();
+    other();
+    return;
+  }
+  std::thread worker(side);
+  other();
   worker.join();
-  return ok && side_ok &&
-         FactorizeNodes(matrix, join, num_nodes, -1, -1, &updates);
 }
 
 int UvSparseCholesky::SideSubtree() const {
@@ -504,8 +521,7 @@ int UvSparseCholesky::SideSubtree() const {
     }
     prefix[i + 1] = prefix[i] + NodeFlops(nodes_[i]);
   }
-  if (max_threads_ < 2 || prefix[num_nodes] < kMinThreadFlops ||
-      std::thread::hardware_concurrency() < 2) {
+  if (prefix[num_nodes] < kMinThreadFlops) {
     return -1;
   }
   // Nodes from the side subtree's parent on run after the join.
@@ -659,47 +675,102 @@ void UvSparseCholesky::AddToDiagonal(int unknown, double delta) {
   }
 }
 
+void UvSparseCholesky::ForwardNode(const Node &node, Eigen::MatrixXd *y,
+                                   Eigen::MatrixXd *outside,
+                                   int outside_begin,
+                                   Eigen::MatrixXd *gathered) const {
+  const int k = node.num_columns;
+  if (k == 0) {
+    return;
+  }
+  const auto panel = Panel(node);
+  auto own = y->middleRows(node.first_column, k);
+  panel.topRows(k).triangularView<Eigen::Lower>().solveInPlace(own);
+  if (node.update_rows.empty()) {
+    return;
+  }
+  gathered->noalias() = panel.bottomRows(node.update_rows.size()) * own;
+  for (size_t i = 0; i < node.update_rows.size(); ++i) {
+    const int row = node.update_rows[i];
+    if (outside != nullptr && row >= outside_begin) {
+      outside->row(row - outside_begin) -= gathered->row(i);
+    } else {
+      y->row(row) -= gathered->row(i);
+    }
+  }
+}
+
+void UvSparseCholesky::BackwardNode(const Node &node, Eigen::MatrixXd *y,
+                                    Eigen::MatrixXd *gathered) const {
+  const int k = node.num_columns;
+  if (k == 0) {
+    return;
+  }
+  const auto panel = Panel(node);
+  auto own = y->middleRows(node.first_column, k);
+  if (!node.update_rows.empty()) {
+    gathered->resize(node.update_rows.size(), y->cols());
+    for (size_t i = 0; i < node.update_rows.size(); ++i) {
+      gathered->row(i) = y->row(node.update_rows[i]);
+    }
+    own.noalias() -=
+        panel.bottomRows(node.update_rows.size()).transpose() * *gathered;
+  }
+  panel.topRows(k).transpose().triangularView<Eigen::Upper>().solveInPlace(
+      own);
+}
+
 void UvSparseCholesky::Solve(Eigen::Ref<Eigen::MatrixXd> rhs) const {
   const int num_rhs = static_cast<int>(rhs.cols());
+  const int num_nodes = static_cast<int>(nodes_.size());
   Eigen::MatrixXd y(num_unknowns(), num_rhs);
   for (int u = 0; u < num_unknowns(); ++u) {
     y.row(column_of_[u]) = rhs.row(u);
   }
-  Eigen::MatrixXd gathered;
-  for (const Node &node : nodes_) {
-    const int k = node.num_columns;
-    if (k == 0) {
-      continue;
-    }
-    const auto panel = Panel(node);
-    auto own = y.middleRows(node.first_column, k);
-    panel.topRows(k).triangularView<Eigen::Lower>().solveInPlace(own);
-    if (!node.update_rows.empty()) {
-      gathered.noalias() = panel.bottomRows(node.update_rows.size()) * own;
-      for (size_t i = 0; i < node.update_rows.size(); ++i) {
-        y.row(node.update_rows[i]) -= gathered.row(i);
-      }
-    }
+  Eigen::MatrixXd gathered, side_gathered;
+  // Forward substitution. The side subtree's updates of the columns after
+  // the join go to |outside| and are added after it, whatever the threads.
+  const int side_begin = side_ < 0 ? num_nodes : side_begin_;
+  const int side_end = side_ < 0 ? num_nodes : side_ + 1;
+  const int join = side_ < 0 ? num_nodes : join_;
+  const int outside_begin =
+      join < num_nodes ? nodes_[join].first_column : num_unknowns();
+  Eigen::MatrixXd outside =
+      Eigen::MatrixXd::Zero(num_unknowns() - outside_begin, num_rhs);
+  RunBoth(
+      [&] {
+        for (int n = side_begin; n < side_end; ++n) {
+          ForwardNode(nodes_[n], &y, &outside, outside_begin, &side_gathered);
+        }
+      },
+      [&] {
+        for (int n = 0; n < join; ++n) {
+          if (n < side_begin || n >= side_end) {
+            ForwardNode(nodes_[n], &y, nullptr, 0, &gathered);
+          }
+        }
+      });
+  y.bottomRows(outside.rows()) += outside;
+  for (int n = join; n < num_nodes; ++n) {
+    ForwardNode(nodes_[n], &y, nullptr, 0, &gathered);
   }
-  for (auto it = nodes_.rbegin(); it != nodes_.rend(); ++it) {
-    const Node &node = *it;
-    const int k = node.num_columns;
-    if (k == 0) {
-      continue;
-    }
-    const auto panel = Panel(node);
-    auto own = y.middleRows(node.first_column, k);
-    if (!node.update_rows.empty()) {
-      gathered.resize(node.update_rows.size(), num_rhs);
-      for (size_t i = 0; i < node.update_rows.size(); ++i) {
-        gathered.row(i) = y.row(node.update_rows[i]);
-      }
-      own.noalias() -=
-          panel.bottomRows(node.update_rows.size()).transpose() * gathered;
-    }
-    panel.topRows(k).transpose().triangularView<Eigen::Upper>().solveInPlace(
-        own);
+  // Back substitution: a node reads only its ancestors' columns.
+  for (int n = num_nodes - 1; n >= join; --n) {
+    BackwardNode(nodes_[n], &y, &gathered);
   }
+  RunBoth(
+      [&] {
+        for (int n = side_end - 1; n >= side_begin; --n) {
+          BackwardNode(nodes_[n], &y, &side_gathered);
+        }
+      },
+      [&] {
+        for (int n = join - 1; n >= 0; --n) {
+          if (n < side_begin || n >= side_end) {
+            BackwardNode(nodes_[n], &y, &gathered);
+          }
+        }
+      });
   for (int u = 0; u < num_unknowns(); ++u) {
     rhs.row(u) = y.row(column_of_[u]);
   }

@@ -79,8 +79,8 @@ class UvSparseCholesky {
   // factor is bit-identical whatever the thread count and timing.
   bool Factorize(const UvSymmetricMatrix &matrix);
 
-  // At most 2 (the default) or 1 thread for Analyze() and Factorize(); the
-  // order and factor do not depend on it.
+  // At most 2 (the default) or 1 thread for Analyze(), Factorize() and
+  // Solve(); their results do not depend on it.
   void set_max_threads(int max_threads) { max_threads_ = max_threads; }
 
   // Replaces the factor of M by the factor of M + delta e_u e_u^T (rank-one
@@ -88,7 +88,8 @@ class UvSparseCholesky {
   // of unknown |unknown|.
   void AddToDiagonal(int unknown, double delta);
 
-  // Solves M X = B in place; |rhs| has one row per unknown.
+  // Solves M X = B in place; |rhs| has one row per unknown. Large systems
+  // use two threads, with the same arithmetic as on one.
   void Solve(Eigen::Ref<Eigen::MatrixXd> rhs) const;
 
   int num_unknowns() const { return static_cast<int>(column_of_.size()); }
@@ -126,10 +127,20 @@ class UvSparseCholesky {
   }
 
   void ComputeUpdateRows(const UvMatrixGraph &graph);
-  // The subtree to factorise on a second thread (its root node), or -1
-  // for one thread: the one that splits the work below its ancestors most
-  // evenly.
+  // The subtree to factorise and solve on a second thread (its root node),
+  // or -1 for one thread: the one that splits the work below its ancestors
+  // most evenly.
   int SideSubtree() const;
+  // Runs |side| on a second thread and |other| on this one, or both here.
+  template <typename Side, typename Other>
+  void RunBoth(const Side &side, const Other &other) const;
+  // Forward substitution of one node; with |outside|, updates of rows from
+  // |outside_begin| on go to outside->row(row - outside_begin).
+  void ForwardNode(const Node &node, Eigen::MatrixXd *y,
+                   Eigen::MatrixXd *outside, int outside_begin,
+                   Eigen::MatrixXd *gathered) const;
+  void BackwardNode(const Node &node, Eigen::MatrixXd *y,
+                    Eigen::MatrixXd *gathered) const;
   // Factorises nodes begin .. end - 1 except skip_begin .. skip_end - 1, in
   // order, with their own workspace. |updates| holds every node's update
   // matrix until its parent has assembled it.
@@ -156,6 +167,11 @@ class UvSparseCholesky {
   std::vector<int> node_of_column_;
   std::vector<double> panels_;
   int max_threads_ = 2;
+  // The side subtree (nodes side_begin_ .. side_, or none when side_ < 0)
+  // and the first node after it that depends on it (join_).
+  int side_ = -1;
+  int side_begin_ = 0;
+  int join_ = 0;
 };
 
 }  // namespace draco
