@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numeric>
 #include <thread>
 #include <utility>
@@ -41,8 +42,8 @@ constexpr size_t kMinThreadPoints = 20000;
 // split into its connected components, and a connected subset at a small
 // balanced separator (a level of a breadth-first level structure rooted at
 // a pseudo-peripheral point, or a cut across the structure's longest
-// extent), thinned. Points are appended to |order| children first, so that the order
-// in which nodes are created is a postorder of the dissection tree.
+// extent), thinned. Points are appended to |order| children first, so that the
+// order in which nodes are created is a postorder of the dissection tree.
 class UvSparseCholesky::Dissection {
  public:
   explicit Dissection(const UvMatrixGraph &graph)
@@ -56,8 +57,8 @@ class UvSparseCholesky::Dissection {
   // the first split into two balanced groups of parts dissects the second
   // group on another thread (with its own Dissection); the nodes and order
   // are the same as on one thread.
-  int Dissect(std::vector<int> points, bool may_spawn,
-              std::vector<Node> *nodes, std::vector<int> *order) {
+  int Dissect(std::vector<int> points, bool may_spawn, std::vector<Node> *nodes,
+              std::vector<int> *order) {
     if (points.size() <= static_cast<size_t>(kLeafPoints)) {
       std::sort(points.begin(), points.end());
       return AddNode(points, {}, nodes, order);
@@ -105,9 +106,9 @@ class UvSparseCholesky::Dissection {
     return parts.size();
   }
 
-  void DissectOnTwoThreads(std::vector<std::vector<int>> *parts,
-                           size_t second, std::vector<int> *children,
-                           std::vector<Node> *nodes, std::vector<int> *order) {
+  void DissectOnTwoThreads(std::vector<std::vector<int>> *parts, size_t second,
+                           std::vector<int> *children, std::vector<Node> *nodes,
+                           std::vector<int> *order) {
     std::vector<Node> side_nodes;
     std::vector<int> side_order, side_roots;
     std::thread worker([&] {
@@ -118,8 +119,7 @@ class UvSparseCholesky::Dissection {
       }
     });
     for (size_t i = 0; i < second; ++i) {
-      children->push_back(
-          Dissect(std::move((*parts)[i]), false, nodes, order));
+      children->push_back(Dissect(std::move((*parts)[i]), false, nodes, order));
     }
     worker.join();
     // Renumber the second group's nodes and columns after the first's.
@@ -165,28 +165,32 @@ class UvSparseCholesky::Dissection {
       SplitComponents(points, label, parts);
       return;
     }
-    // Pseudo-peripheral root: restart from a point of the last level while
-    // the depth grows.
-    for (int attempt = 0; attempt < 4; ++attempt) {
-      const int depth = static_cast<int>(levels.size());
-      std::vector<int> next_reached, next_levels;
-      LevelStructure(reached.back(), label, &next_reached, &next_levels);
-      if (static_cast<int>(next_levels.size()) <= depth) {
-        break;
+    // Pseudo-peripheral root a: restart from a point b of the last level
+    // while the depth grows. far_* is the level structure from b.
+    std::vector<int> far_reached, far_levels;
+    bool have_far = false;
+    for (int attempt = 0; attempt < 4 && !have_far; ++attempt) {
+      LevelStructure(reached.back(), label, &far_reached, &far_levels);
+      have_far = far_levels.size() <= levels.size();
+      if (!have_far) {
+        reached.swap(far_reached);
+        levels.swap(far_levels);
       }
-      reached.swap(next_reached);
-      levels.swap(next_levels);
+    }
+    if (!have_far) {
+      LevelStructure(reached.back(), label, &far_reached, &far_levels);
     }
     // sides[i]: where reached[i] goes. The smaller of two balanced cuts,
     // thinned.
     std::vector<int8_t> sides;
     const int level_cut = LevelCut(levels, &sides);
-    DistanceCut(reached, levels, label, level_cut, &sides);
+    DistanceCut(reached, levels, far_reached, far_levels, level_cut, &sides);
     ThinSeparator(reached, label, &sides);
     std::vector<int> before, after;
     for (size_t i = 0; i < reached.size(); ++i) {
-      std::vector<int> &target =
-          sides[i] == kBefore ? before : sides[i] == kAfter ? after : *separator;
+      std::vector<int> &target = sides[i] == kBefore  ? before
+                                 : sides[i] == kAfter ? after
+                                                      : *separator;
       target.push_back(reached[i]);
     }
     if (!before.empty()) {
@@ -246,16 +250,16 @@ class UvSparseCholesky::Dissection {
   // the middle, which measured 5-60% fewer factor flops. Replaces |sides|
   // when the smallest balanced such cut is smaller than |current_size|.
   void DistanceCut(const std::vector<int> &reached,
-                   const std::vector<int> &levels, int label,
-                   int current_size, std::vector<int8_t> *sides) {
+                   const std::vector<int> &levels,
+                   const std::vector<int> &far_reached,
+                   const std::vector<int> &far_levels, int current_size,
+                   std::vector<int8_t> *sides) {
     const int total = static_cast<int>(reached.size());
     for (size_t l = 0, i = 0; l < levels.size(); ++l) {
       for (; i < static_cast<size_t>(levels[l]); ++i) {
         distance_[reached[i]] = static_cast<int>(l);
       }
     }
-    std::vector<int> far_reached, far_levels;
-    LevelStructure(reached.back(), label, &far_reached, &far_levels);
     const int offset = static_cast<int>(far_levels.size());
     std::vector<int> histogram(levels.size() + far_levels.size() + 2, 0);
     for (size_t l = 0, i = 0; l < far_levels.size(); ++l) {
@@ -378,8 +382,7 @@ bool UvSparseCholesky::Analyze(const UvMatrixGraph &graph,
   if (n > 0) {
     const bool may_spawn =
         max_threads_ > 1 && std::thread::hardware_concurrency() > 1;
-    Dissection(graph).Dissect(std::move(all), may_spawn, &nodes_,
-                              &unknown_of_);
+    Dissection(graph).Dissect(std::move(all), may_spawn, &nodes_, &unknown_of_);
   }
   column_of_.assign(n, 0);
   for (int column = 0; column < n; ++column) {
@@ -407,13 +410,15 @@ bool UvSparseCholesky::Analyze(const UvMatrixGraph &graph,
   side_ = SideSubtree();
   if (side_ >= 0) {
     side_begin_ = side_ - subtree_size_[side_] + 1;
-    join_ = parent_[side_] < 0 ? static_cast<int>(nodes_.size())
-                               : parent_[side_];
+    join_ =
+        parent_[side_] < 0 ? static_cast<int>(nodes_.size()) : parent_[side_];
   }
   if (offset > max_entries) {
     return false;
   }
-  panels_.assign(offset, 0.0);
+  // Not zeroed: Factorize() writes every entry.
+  panels_.reset(new double[offset]);
+  num_panel_entries_ = offset;
   return true;
 }
 
@@ -458,15 +463,14 @@ void UvSparseCholesky::FrontColumns(const Node &node,
 }
 
 Eigen::Map<Eigen::MatrixXd> UvSparseCholesky::Panel(const Node &node) {
-  return Eigen::Map<Eigen::MatrixXd>(panels_.data() + node.panel_offset,
+  return Eigen::Map<Eigen::MatrixXd>(panels_.get() + node.panel_offset,
                                      node.front_size(), node.num_columns);
 }
 
 Eigen::Map<const Eigen::MatrixXd> UvSparseCholesky::Panel(
     const Node &node) const {
-  return Eigen::Map<const Eigen::MatrixXd>(panels_.data() + node.panel_offset,
-                                           node.front_size(),
-                                           node.num_columns);
+  return Eigen::Map<const Eigen::MatrixXd>(panels_.get() + node.panel_offset,
+                                           node.front_size(), node.num_columns);
 }
 
 bool UvSparseCholesky::Factorize(const UvSymmetricMatrix &matrix) {
@@ -487,12 +491,12 @@ bool UvSparseCholesky::Factorize(const UvSymmetricMatrix &matrix) {
   bool side_ok = false, other_ok = false;
   RunBoth(
       [&] {
-        side_ok = FactorizeNodes(matrix, side_begin_, side_ + 1, -1, -1,
-                                 &updates);
+        side_ok =
+            FactorizeNodes(matrix, side_begin_, side_ + 1, -1, -1, &updates);
       },
       [&] {
-        other_ok = FactorizeNodes(matrix, 0, join_, side_begin_, side_ + 1,
-                                  &updates);
+        other_ok =
+            FactorizeNodes(matrix, 0, join_, side_begin_, side_ + 1, &updates);
       });
   return side_ok && other_ok &&
          FactorizeNodes(matrix, join_, num_nodes, -1, -1, &updates);
@@ -595,8 +599,7 @@ bool UvSparseCholesky::FactorizeNode(
   for (const int child : node.children) {
     const std::vector<int> &rows = nodes_[child].update_rows;
     const int size = static_cast<int>(rows.size());
-    Eigen::Map<const Eigen::MatrixXd> update(updates[child].data(), size,
-                                             size);
+    Eigen::Map<const Eigen::MatrixXd> update(updates[child].data(), size, size);
     for (int a = 0; a < size; ++a) {
       const int column = front_index[rows[a]];
       for (int b = a; b < size; ++b) {
@@ -610,13 +613,13 @@ bool UvSparseCholesky::FactorizeNode(
   if (k > 0) {
     Eigen::Ref<Eigen::MatrixXd> diagonal = front.topLeftCorner(k, k);
     Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt(diagonal);
-    if (llt.info() != Eigen::Success ||
-        !diagonal.diagonal().allFinite()) {
+    if (llt.info() != Eigen::Success || !diagonal.diagonal().allFinite()) {
       return false;
     }
     if (m > k) {
       auto below = front.bottomLeftCorner(m - k, k);
-      diagonal.transpose().triangularView<Eigen::Upper>()
+      diagonal.transpose()
+          .triangularView<Eigen::Upper>()
           .solveInPlace<Eigen::OnTheRight>(below);
       front.bottomRightCorner(m - k, m - k)
           .selfadjointView<Eigen::Lower>()
@@ -676,8 +679,7 @@ void UvSparseCholesky::AddToDiagonal(int unknown, double delta) {
 }
 
 void UvSparseCholesky::ForwardNode(const Node &node, Eigen::MatrixXd *y,
-                                   Eigen::MatrixXd *outside,
-                                   int outside_begin,
+                                   Eigen::MatrixXd *outside, int outside_begin,
                                    Eigen::MatrixXd *gathered) const {
   const int k = node.num_columns;
   if (k == 0) {
@@ -716,8 +718,7 @@ void UvSparseCholesky::BackwardNode(const Node &node, Eigen::MatrixXd *y,
     own.noalias() -=
         panel.bottomRows(node.update_rows.size()).transpose() * *gathered;
   }
-  panel.topRows(k).transpose().triangularView<Eigen::Upper>().solveInPlace(
-      own);
+  panel.topRows(k).transpose().triangularView<Eigen::Upper>().solveInPlace(own);
 }
 
 void UvSparseCholesky::Solve(Eigen::Ref<Eigen::MatrixXd> rhs) const {

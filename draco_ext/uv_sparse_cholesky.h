@@ -41,6 +41,7 @@
 #define DRACO_EXT_UV_SPARSE_CHOLESKY_H_
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <Eigen/Core>
@@ -94,7 +95,7 @@ class UvSparseCholesky {
 
   int num_unknowns() const { return static_cast<int>(column_of_.size()); }
   // Entries of the factor, dense fronts included.
-  int64_t factor_size() const { return static_cast<int64_t>(panels_.size()); }
+  int64_t factor_size() const { return num_panel_entries_; }
   // Floating point operations of Factorize().
   double factor_flops() const {
     double flops = 0;
@@ -159,13 +160,14 @@ class UvSparseCholesky {
   // Updates column |local| of |node| and the entries of |w| it touches.
   void UpdateColumn(Node &node, int local, std::vector<double> *w);
 
-  std::vector<Node> nodes_;         // Children before parents.
-  std::vector<int> parent_;         // Node -> parent node, -1 for roots.
-  std::vector<int> subtree_size_;   // Nodes in the subtree of a node.
-  std::vector<int> column_of_;      // Unknown -> column.
-  std::vector<int> unknown_of_;     // Column -> unknown.
+  std::vector<Node> nodes_;        // Children before parents.
+  std::vector<int> parent_;        // Node -> parent node, -1 for roots.
+  std::vector<int> subtree_size_;  // Nodes in the subtree of a node.
+  std::vector<int> column_of_;     // Unknown -> column.
+  std::vector<int> unknown_of_;    // Column -> unknown.
   std::vector<int> node_of_column_;
-  std::vector<double> panels_;
+  std::unique_ptr<double[]> panels_;
+  int64_t num_panel_entries_ = 0;
   int max_threads_ = 2;
   // The side subtree (nodes side_begin_ .. side_, or none when side_ < 0)
   // and the first node after it that depends on it (join_).

@@ -126,8 +126,8 @@ TEST(UvSparseCholeskyTest, RejectsIndefiniteMatricesInAnySubtree) {
   // Negative diagonals at both ends of the grid, in different subtrees.
   for (const int u : {0, s.matrix.size - 1}) {
     GridSystem bad = s;
-    for (int e = bad.matrix.column_start[u];
-         e < bad.matrix.column_start[u + 1]; ++e) {
+    for (int e = bad.matrix.column_start[u]; e < bad.matrix.column_start[u + 1];
+         ++e) {
       if (bad.matrix.row[e] == u) {
         bad.matrix.value[e] = -1.0;
       }
