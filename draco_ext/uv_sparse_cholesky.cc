@@ -691,7 +691,13 @@ void UvSparseCholesky::ForwardNode(const Node &node, Eigen::MatrixXd *y,
   if (node.update_rows.empty()) {
     return;
   }
-  gathered->noalias() = panel.bottomRows(node.update_rows.size()) * own;
+  // Matrix-vector products per right-hand side: a matrix product would
+  // copy (pack) the whole panel for the few right-hand sides.
+  const auto below = panel.bottomRows(node.update_rows.size());
+  gathered->resize(node.update_rows.size(), own.cols());
+  for (int c = 0; c < own.cols(); ++c) {
+    gathered->col(c).noalias() = below * own.col(c);
+  }
   for (size_t i = 0; i < node.update_rows.size(); ++i) {
     const int row = node.update_rows[i];
     if (outside != nullptr && row >= outside_begin) {
@@ -715,8 +721,10 @@ void UvSparseCholesky::BackwardNode(const Node &node, Eigen::MatrixXd *y,
     for (size_t i = 0; i < node.update_rows.size(); ++i) {
       gathered->row(i) = y->row(node.update_rows[i]);
     }
-    own.noalias() -=
-        panel.bottomRows(node.update_rows.size()).transpose() * *gathered;
+    const auto below = panel.bottomRows(node.update_rows.size());
+    for (int c = 0; c < own.cols(); ++c) {
+      own.col(c).noalias() -= below.transpose() * gathered->col(c);
+    }
   }
   panel.topRows(k).transpose().triangularView<Eigen::Upper>().solveInPlace(own);
 }
