@@ -9,6 +9,9 @@ set(draco_uv_schemes "${draco_uv_root}/prediction_schemes")
 set(draco_uv_ext "${draco_uv_root}/draco_ext")
 
 list(APPEND draco_include_paths "${draco_uv_root}")
+# The Laplacian decoder's sparse Cholesky factorises on two threads.
+find_package(Threads REQUIRED)
+link_libraries(Threads::Threads)
 # The Laplacian texture coordinate coder needs Eigen, which Draco itself puts
 # on the include path only for its transcoder.
 if(DRACO_EIGEN_PATH)

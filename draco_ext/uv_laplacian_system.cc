@@ -121,9 +121,9 @@ int64_t NormalMatrixBound(const UvLaplacianOperator &op) {
   return bound;
 }
 
-// The factorisation's work is capped at kFlopsScale n^1.5 + kMinFlops: 3-7
+// The factorisation's work is capped at kFlopsScale n^1.5 + kMinFlops: 4-9
 // times what the corpus meshes and the 300k-vertex benchmark meshes need
-// under nested dissection (at most 330 n^1.5, measured), so that hostile
+// under nested dissection (at most 255 n^1.5, measured), so that hostile
 // connectivity (huge separators) fails instead of decoding for hours.
 double MaxFactorFlops(int num_unknowns) {
   constexpr double kFlopsScale = 1024;

@@ -16,7 +16,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <numeric>
+#include <thread>
 #include <utility>
 
 #include <Eigen/Cholesky>
@@ -29,22 +31,33 @@ namespace {
 // Dissection stops at subsets of at most this many points (dense leaves).
 constexpr int kLeafPoints = 32;
 
+// Factorisations of fewer flops, and dissections of fewer points, stay on
+// one thread.
+constexpr double kMinThreadFlops = 1e8;
+constexpr size_t kMinThreadPoints = 20000;
+
 }  // namespace
 
 // Nested dissection of the point graph [George & Liu 1978]: every subset is
-// split into its connected components, and a connected subset at the median
-// level of a breadth-first level structure rooted at a pseudo-peripheral
-// point. Points are appended to |order| children first, so that the order
-// in which nodes are created is a postorder of the dissection tree.
+// split into its connected components, and a connected subset at a small
+// balanced separator (a level of a breadth-first level structure rooted at
+// a pseudo-peripheral point, or a cut across the structure's longest
+// extent), thinned. Points are appended to |order| children first, so that the
+// order in which nodes are created is a postorder of the dissection tree.
 class UvSparseCholesky::Dissection {
  public:
   explicit Dissection(const UvMatrixGraph &graph)
       : graph_(graph),
         label_(graph.size(), -1),
-        level_(graph.size(), -1) {}
+        level_(graph.size(), -1),
+        distance_(graph.size(), 0),
+        side_(graph.size(), 0) {}
 
-  // Returns the index of the subtree's root in |nodes|.
-  int Dissect(std::vector<int> points, std::vector<Node> *nodes,
+  // Returns the index of the subtree's root in |nodes|. With |may_spawn|,
+  // the first split into two balanced groups of parts dissects the second
+  // group on another thread (with its own Dissection); the nodes and order
+  // are the same as on one thread.
+  int Dissect(std::vector<int> points, bool may_spawn, std::vector<Node> *nodes,
               std::vector<int> *order) {
     if (points.size() <= static_cast<size_t>(kLeafPoints)) {
       std::sort(points.begin(), points.end());
@@ -54,14 +67,77 @@ class UvSparseCholesky::Dissection {
     std::vector<int> separator;
     Split(points, &parts, &separator);
     std::vector<int> children;
-    for (std::vector<int> &part : parts) {
-      children.push_back(Dissect(std::move(part), nodes, order));
+    const size_t second = may_spawn ? SecondGroup(parts) : parts.size();
+    if (second < parts.size()) {
+      DissectOnTwoThreads(&parts, second, &children, nodes, order);
+    } else {
+      // Only the largest part may still spawn.
+      size_t largest = 0;
+      for (size_t i = 1; i < parts.size(); ++i) {
+        if (parts[i].size() > parts[largest].size()) {
+          largest = i;
+        }
+      }
+      for (size_t i = 0; i < parts.size(); ++i) {
+        children.push_back(Dissect(std::move(parts[i]),
+                                   may_spawn && i == largest, nodes, order));
+      }
     }
     std::sort(separator.begin(), separator.end());
     return AddNode(separator, std::move(children), nodes, order);
   }
 
  private:
+  // The first part of the second group when parts[0 .. i - 1] and the
+  // rest each hold at least a third of the points, else parts.size().
+  static size_t SecondGroup(const std::vector<std::vector<int>> &parts) {
+    size_t total = 0;
+    for (const std::vector<int> &part : parts) {
+      total += part.size();
+    }
+    size_t before = 0;
+    for (size_t i = 0; i < parts.size(); ++i) {
+      if (3 * before >= total && 3 * (total - before) >= total &&
+          total >= kMinThreadPoints) {
+        return i;
+      }
+      before += parts[i].size();
+    }
+    return parts.size();
+  }
+
+  void DissectOnTwoThreads(std::vector<std::vector<int>> *parts, size_t second,
+                           std::vector<int> *children, std::vector<Node> *nodes,
+                           std::vector<int> *order) {
+    std::vector<Node> side_nodes;
+    std::vector<int> side_order, side_roots;
+    std::thread worker([&] {
+      Dissection side(graph_);
+      for (size_t i = second; i < parts->size(); ++i) {
+        side_roots.push_back(side.Dissect(std::move((*parts)[i]), false,
+                                          &side_nodes, &side_order));
+      }
+    });
+    for (size_t i = 0; i < second; ++i) {
+      children->push_back(Dissect(std::move((*parts)[i]), false, nodes, order));
+    }
+    worker.join();
+    // Renumber the second group's nodes and columns after the first's.
+    const int node_offset = static_cast<int>(nodes->size());
+    const int column_offset = static_cast<int>(order->size());
+    for (Node &node : side_nodes) {
+      node.first_column += column_offset;
+      for (int &child : node.children) {
+        child += node_offset;
+      }
+      nodes->push_back(std::move(node));
+    }
+    for (const int root : side_roots) {
+      children->push_back(root + node_offset);
+    }
+    order->insert(order->end(), side_order.begin(), side_order.end());
+  }
+
   static int AddNode(const std::vector<int> &points, std::vector<int> children,
                      std::vector<Node> *nodes, std::vector<int> *order) {
     Node node;
@@ -74,7 +150,7 @@ class UvSparseCholesky::Dissection {
   }
 
   // A disconnected subset becomes its components (empty separator); a
-  // connected one loses the median level of its level structure.
+  // connected one loses a small separator near its middle.
   void Split(const std::vector<int> &points,
              std::vector<std::vector<int>> *parts,
              std::vector<int> *separator) {
@@ -89,29 +165,67 @@ class UvSparseCholesky::Dissection {
       SplitComponents(points, label, parts);
       return;
     }
-    // Pseudo-peripheral root: restart from a point of the last level while
-    // the depth grows.
-    for (int attempt = 0; attempt < 4; ++attempt) {
-      const int depth = static_cast<int>(levels.size());
-      std::vector<int> next_reached, next_levels;
-      LevelStructure(reached.back(), label, &next_reached, &next_levels);
-      if (static_cast<int>(next_levels.size()) <= depth) {
-        break;
+    // Pseudo-peripheral root a: restart from a point b of the last level
+    // while the depth grows. far_* is the level structure from b.
+    std::vector<int> far_reached, far_levels;
+    bool have_far = false;
+    for (int attempt = 0; attempt < 4 && !have_far; ++attempt) {
+      LevelStructure(reached.back(), label, &far_reached, &far_levels);
+      have_far = far_levels.size() <= levels.size();
+      if (!have_far) {
+        reached.swap(far_reached);
+        levels.swap(far_levels);
       }
-      reached.swap(next_reached);
-      levels.swap(next_levels);
     }
-    // levels[l] is the end of level l in |reached|. The separator is the
-    // smallest level among those that leave 40-60% of the points before it.
+    if (!have_far) {
+      LevelStructure(reached.back(), label, &far_reached, &far_levels);
+    }
+    // sides[i]: where reached[i] goes. The smaller of two balanced cuts,
+    // thinned.
+    std::vector<int8_t> sides;
+    const int level_cut = LevelCut(levels, &sides);
+    DistanceCut(reached, levels, far_reached, far_levels, level_cut, &sides);
+    ThinSeparator(reached, label, &sides);
+    std::vector<int> before, after;
+    for (size_t i = 0; i < reached.size(); ++i) {
+      std::vector<int> &target = sides[i] == kBefore  ? before
+                                 : sides[i] == kAfter ? after
+                                                      : *separator;
+      target.push_back(reached[i]);
+    }
+    if (!before.empty()) {
+      parts->push_back(std::move(before));
+    }
+    if (!after.empty()) {
+      parts->push_back(std::move(after));
+    }
+  }
+
+  static constexpr int8_t kBefore = 0;
+  static constexpr int8_t kSeparator = 1;
+  static constexpr int8_t kAfter = 2;
+
+  // Whether a cut leaving |before| points before and |after| after a
+  // separator is balanced enough.
+  static bool Balanced(int64_t before, int64_t after) {
+    const int64_t parts = before + after;
+    return 5 * std::min(before, after) >= 2 * parts;
+  }
+
+  // The smallest level whose sides are balanced [George & Liu 1978];
+  // levels[l] is the end of level l in the level order. Returns the
+  // separator's size.
+  int LevelCut(const std::vector<int> &levels, std::vector<int8_t> *sides) {
     const int num_levels = static_cast<int>(levels.size());
-    const double total = static_cast<double>(reached.size());
+    const int total = levels.back();
     int best = -1;
+    int best_size = 0;
     for (int l = 1; l + 1 < num_levels; ++l) {
-      const double before = levels[l - 1] / total;
       const int size = levels[l] - levels[l - 1];
-      if (before >= 0.4 && before <= 0.6 &&
-          (best < 0 || size < levels[best] - levels[best - 1])) {
+      if (Balanced(levels[l - 1], total - levels[l]) &&
+          (best < 0 || size < best_size)) {
         best = l;
+        best_size = size;
       }
     }
     if (best < 0) {
@@ -121,14 +235,87 @@ class UvSparseCholesky::Dissection {
         ++best;
       }
     }
-    const int sep_begin = levels[best - 1];
-    const int sep_end = levels[best];
-    separator->assign(reached.begin() + sep_begin, reached.begin() + sep_end);
-    if (sep_begin > 0) {
-      parts->emplace_back(reached.begin(), reached.begin() + sep_begin);
+    sides->assign(total, kAfter);
+    std::fill(sides->begin(), sides->begin() + levels[best - 1], kBefore);
+    std::fill(sides->begin() + levels[best - 1], sides->begin() + levels[best],
+              kSeparator);
+    return levels[best] - levels[best - 1];
+  }
+
+  // A cut across the subset's longest extent: with d_a and d_b the
+  // distances from the root a and from the farthest point b of the level
+  // structure, f = d_a - d_b changes by at most 2 along an edge, so the
+  // points with f in {c, c + 1} separate f < c from f > c + 1. Unlike a
+  // level (a circle around a), the level sets of f run straight across
+  // the middle, which measured 5-60% fewer factor flops. Replaces |sides|
+  // when the smallest balanced such cut is smaller than |current_size|.
+  void DistanceCut(const std::vector<int> &reached,
+                   const std::vector<int> &levels,
+                   const std::vector<int> &far_reached,
+                   const std::vector<int> &far_levels, int current_size,
+                   std::vector<int8_t> *sides) {
+    const int total = static_cast<int>(reached.size());
+    for (size_t l = 0, i = 0; l < levels.size(); ++l) {
+      for (; i < static_cast<size_t>(levels[l]); ++i) {
+        distance_[reached[i]] = static_cast<int>(l);
+      }
     }
-    if (sep_end < static_cast<int>(reached.size())) {
-      parts->emplace_back(reached.begin() + sep_end, reached.end());
+    const int offset = static_cast<int>(far_levels.size());
+    std::vector<int> histogram(levels.size() + far_levels.size() + 2, 0);
+    for (size_t l = 0, i = 0; l < far_levels.size(); ++l) {
+      for (; i < static_cast<size_t>(far_levels[l]); ++i) {
+        const int p = far_reached[i];
+        distance_[p] = distance_[p] - static_cast<int>(l) + offset;
+        ++histogram[distance_[p]];
+      }
+    }
+    int best = -1, best_size = 0, before = 0;
+    for (size_t c = 0; c + 1 < histogram.size(); ++c) {
+      const int size = histogram[c] + histogram[c + 1];
+      if (Balanced(before, total - before - size) &&
+          (best < 0 || size < best_size)) {
+        best = static_cast<int>(c);
+        best_size = size;
+      }
+      before += histogram[c];
+    }
+    if (best < 0 || best_size >= current_size) {
+      return;
+    }
+    for (int i = 0; i < total; ++i) {
+      const int f = distance_[reached[i]];
+      (*sides)[i] = f < best ? kBefore : f > best + 1 ? kAfter : kSeparator;
+    }
+  }
+
+  // Moves the separator's points without neighbours after it to before it,
+  // then those without neighbours before it to after it. A separator
+  // between two non-empty sides of a connected subset stays non-empty.
+  void ThinSeparator(const std::vector<int> &reached, int label,
+                     std::vector<int8_t> *sides) {
+    if (std::find(sides->begin(), sides->end(), kAfter) == sides->end()) {
+      return;
+    }
+    for (size_t i = 0; i < reached.size(); ++i) {
+      side_[reached[i]] = (*sides)[i];
+    }
+    for (const int8_t from : {kAfter, kBefore}) {
+      for (size_t i = 0; i < reached.size(); ++i) {
+        const int p = reached[i];
+        if (side_[p] != kSeparator) {
+          continue;
+        }
+        bool touches = false;
+        for (int e = graph_.start[p]; e < graph_.start[p + 1] && !touches;
+             ++e) {
+          const int q = graph_.neighbour[e];
+          touches = label_[q] == label && side_[q] == from;
+        }
+        if (!touches) {
+          side_[p] = static_cast<int8_t>(kAfter - from);
+          (*sides)[i] = side_[p];
+        }
+      }
     }
   }
 
@@ -178,6 +365,8 @@ class UvSparseCholesky::Dissection {
   const UvMatrixGraph &graph_;
   std::vector<int> label_;
   std::vector<int> level_;
+  std::vector<int> distance_;
+  std::vector<int8_t> side_;
   int next_label_ = 0;
   int next_stamp_ = 0;
 };
@@ -191,13 +380,23 @@ bool UvSparseCholesky::Analyze(const UvMatrixGraph &graph,
   std::vector<int> all(n);
   std::iota(all.begin(), all.end(), 0);
   if (n > 0) {
-    Dissection(graph).Dissect(std::move(all), &nodes_, &unknown_of_);
+    const bool may_spawn =
+        max_threads_ > 1 && std::thread::hardware_concurrency() > 1;
+    Dissection(graph).Dissect(std::move(all), may_spawn, &nodes_, &unknown_of_);
   }
   column_of_.assign(n, 0);
   for (int column = 0; column < n; ++column) {
     column_of_[unknown_of_[column]] = column;
   }
   ComputeUpdateRows(graph);
+  parent_.assign(nodes_.size(), -1);
+  subtree_size_.assign(nodes_.size(), 1);
+  for (size_t i = 0; i < nodes_.size(); ++i) {
+    for (const int child : nodes_[i].children) {
+      parent_[child] = static_cast<int>(i);
+      subtree_size_[i] += subtree_size_[child];
+    }
+  }
   node_of_column_.assign(n, 0);
   int64_t offset = 0;
   for (size_t i = 0; i < nodes_.size(); ++i) {
@@ -208,10 +407,18 @@ bool UvSparseCholesky::Analyze(const UvMatrixGraph &graph,
               node_of_column_.begin() + node.first_column + node.num_columns,
               static_cast<int>(i));
   }
+  side_ = SideSubtree();
+  if (side_ >= 0) {
+    side_begin_ = side_ - subtree_size_[side_] + 1;
+    join_ =
+        parent_[side_] < 0 ? static_cast<int>(nodes_.size()) : parent_[side_];
+  }
   if (offset > max_entries) {
     return false;
   }
-  panels_.assign(offset, 0.0);
+  // Not zeroed: Factorize() writes every entry.
+  panels_.reset(new double[offset]);
+  num_panel_entries_ = offset;
   return true;
 }
 
@@ -256,15 +463,14 @@ void UvSparseCholesky::FrontColumns(const Node &node,
 }
 
 Eigen::Map<Eigen::MatrixXd> UvSparseCholesky::Panel(const Node &node) {
-  return Eigen::Map<Eigen::MatrixXd>(panels_.data() + node.panel_offset,
+  return Eigen::Map<Eigen::MatrixXd>(panels_.get() + node.panel_offset,
                                      node.front_size(), node.num_columns);
 }
 
 Eigen::Map<const Eigen::MatrixXd> UvSparseCholesky::Panel(
     const Node &node) const {
-  return Eigen::Map<const Eigen::MatrixXd>(panels_.data() + node.panel_offset,
-                                           node.front_size(),
-                                           node.num_columns);
+  return Eigen::Map<const Eigen::MatrixXd>(panels_.get() + node.panel_offset,
+                                           node.front_size(), node.num_columns);
 }
 
 bool UvSparseCholesky::Factorize(const UvSymmetricMatrix &matrix) {
@@ -276,75 +482,155 @@ bool UvSparseCholesky::Factorize(const UvSymmetricMatrix &matrix) {
       return false;
     }
   }
-  std::vector<int> front_index(num_unknowns(), -1);
   std::vector<std::vector<double>> updates(nodes_.size());
+  const int num_nodes = static_cast<int>(nodes_.size());
+  if (side_ < 0) {
+    return FactorizeNodes(matrix, 0, num_nodes, -1, -1, &updates);
+  }
+  // The side subtree and the other nodes before the join are independent.
+  bool side_ok = false, other_ok = false;
+  RunBoth(
+      [&] {
+        side_ok =
+            FactorizeNodes(matrix, side_begin_, side_ + 1, -1, -1, &updates);
+      },
+      [&] {
+        other_ok =
+            FactorizeNodes(matrix, 0, join_, side_begin_, side_ + 1, &updates);
+      });
+  return side_ok && other_ok &&
+         FactorizeNodes(matrix, join_, num_nodes, -1, -1, &updates);
+}
+
+template <typename Side, typename Other>
+void UvSparseCholesky::RunBoth(const Side &side, const Other &other) const {
+  if (max_threads_ < 2 || std::thread::hardware_concurrency() < 2) {
+    side();
+    other();
+    return;
+  }
+  std::thread worker(side);
+  other();
+  worker.join();
+}
+
+int UvSparseCholesky::SideSubtree() const {
+  // prefix[i]: the work of nodes 0 .. i - 1 (postorder).
+  const int num_nodes = static_cast<int>(nodes_.size());
+  std::vector<double> subtree(num_nodes), prefix(num_nodes + 1, 0.0);
+  for (int i = 0; i < num_nodes; ++i) {
+    subtree[i] = NodeFlops(nodes_[i]);
+    for (const int child : nodes_[i].children) {
+      subtree[i] += subtree[child];
+    }
+    prefix[i + 1] = prefix[i] + NodeFlops(nodes_[i]);
+  }
+  if (prefix[num_nodes] < kMinThreadFlops) {
+    return -1;
+  }
+  // Nodes from the side subtree's parent on run after the join.
+  int best = -1;
+  double best_time = prefix[num_nodes];
+  for (int i = 0; i < num_nodes; ++i) {
+    const double before_join = prefix[parent_[i] < 0 ? num_nodes : parent_[i]];
+    const double time = std::max(before_join - subtree[i], subtree[i]) +
+                        prefix[num_nodes] - before_join;
+    if (time < best_time) {
+      best = i;
+      best_time = time;
+    }
+  }
+  return best;
+}
+
+bool UvSparseCholesky::FactorizeNodes(
+    const UvSymmetricMatrix &matrix, int begin, int end, int skip_begin,
+    int skip_end, std::vector<std::vector<double>> *updates) {
+  std::vector<int> front_index(num_unknowns(), -1);
   std::vector<double> front_storage;
   std::vector<int> columns;
-  for (size_t n = 0; n < nodes_.size(); ++n) {
-    const Node &node = nodes_[n];
-    const int k = node.num_columns;
-    const int m = node.front_size();
-    FrontColumns(node, &columns);
-    for (int i = 0; i < m; ++i) {
-      front_index[columns[i]] = i;
+  for (int n = begin; n < end; ++n) {
+    if (n >= skip_begin && n < skip_end) {
+      continue;
     }
-    front_storage.assign(static_cast<size_t>(m) * m, 0.0);
-    Eigen::Map<Eigen::MatrixXd> front(front_storage.data(), m, m);
-    // The node's columns of the matrix (lower triangle in factor order).
-    for (int j = 0; j < k; ++j) {
-      const int column = node.first_column + j;
-      const int unknown = unknown_of_[column];
-      for (int e = matrix.column_start[unknown];
-           e < matrix.column_start[unknown + 1]; ++e) {
-        const int row_column = column_of_[matrix.row[e]];
-        if (row_column < column) {
-          continue;
-        }
-        const int local = front_index[row_column];
-        if (local < 0 || local >= m || columns[local] != row_column) {
-          return false;  // Not in the analysed pattern.
-        }
-        front(local, j) += matrix.value[e];
+    if (!FactorizeNode(matrix, n, &front_index, &front_storage, &columns,
+                       updates)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+bool UvSparseCholesky::FactorizeNode(
+    const UvSymmetricMatrix &matrix, int n, std::vector<int> *front_index_ptr,
+    std::vector<double> *front_storage_ptr, std::vector<int> *columns_ptr,
+    std::vector<std::vector<double>> *updates_ptr) {
+  std::vector<int> &front_index = *front_index_ptr;
+  std::vector<double> &front_storage = *front_storage_ptr;
+  std::vector<int> &columns = *columns_ptr;
+  std::vector<std::vector<double>> &updates = *updates_ptr;
+  const Node &node = nodes_[n];
+  const int k = node.num_columns;
+  const int m = node.front_size();
+  FrontColumns(node, &columns);
+  for (int i = 0; i < m; ++i) {
+    front_index[columns[i]] = i;
+  }
+  front_storage.assign(static_cast<size_t>(m) * m, 0.0);
+  Eigen::Map<Eigen::MatrixXd> front(front_storage.data(), m, m);
+  // The node's columns of the matrix (lower triangle in factor order).
+  for (int j = 0; j < k; ++j) {
+    const int column = node.first_column + j;
+    const int unknown = unknown_of_[column];
+    for (int e = matrix.column_start[unknown];
+         e < matrix.column_start[unknown + 1]; ++e) {
+      const int row_column = column_of_[matrix.row[e]];
+      if (row_column < column) {
+        continue;
+      }
+      const int local = front_index[row_column];
+      if (local < 0 || local >= m || columns[local] != row_column) {
+        return false;  // Not in the analysed pattern.
+      }
+      front(local, j) += matrix.value[e];
+    }
+  }
+  // Extend-add of the children's update matrices.
+  for (const int child : node.children) {
+    const std::vector<int> &rows = nodes_[child].update_rows;
+    const int size = static_cast<int>(rows.size());
+    Eigen::Map<const Eigen::MatrixXd> update(updates[child].data(), size, size);
+    for (int a = 0; a < size; ++a) {
+      const int column = front_index[rows[a]];
+      for (int b = a; b < size; ++b) {
+        front(front_index[rows[b]], column) += update(b, a);
       }
     }
-    // Extend-add of the children's update matrices.
-    for (const int child : node.children) {
-      const std::vector<int> &rows = nodes_[child].update_rows;
-      const int size = static_cast<int>(rows.size());
-      Eigen::Map<const Eigen::MatrixXd> update(updates[child].data(), size,
-                                               size);
-      for (int a = 0; a < size; ++a) {
-        const int column = front_index[rows[a]];
-        for (int b = a; b < size; ++b) {
-          front(front_index[rows[b]], column) += update(b, a);
-        }
-      }
-      std::vector<double>().swap(updates[child]);
-    }
-    // Dense partial factorisation: L11 L11^T = F11, L21 = F21 L11^-T,
-    // update = F22 - L21 L21^T.
-    if (k > 0) {
-      Eigen::Ref<Eigen::MatrixXd> diagonal = front.topLeftCorner(k, k);
-      Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt(diagonal);
-      if (llt.info() != Eigen::Success ||
-          !diagonal.diagonal().allFinite()) {
-        return false;
-      }
-      if (m > k) {
-        auto below = front.bottomLeftCorner(m - k, k);
-        diagonal.transpose().triangularView<Eigen::Upper>()
-            .solveInPlace<Eigen::OnTheRight>(below);
-        front.bottomRightCorner(m - k, m - k)
-            .selfadjointView<Eigen::Lower>()
-            .rankUpdate(below, -1.0);
-      }
-      Panel(node) = front.leftCols(k);
+    std::vector<double>().swap(updates[child]);
+  }
+  // Dense partial factorisation: L11 L11^T = F11, L21 = F21 L11^-T,
+  // update = F22 - L21 L21^T.
+  if (k > 0) {
+    Eigen::Ref<Eigen::MatrixXd> diagonal = front.topLeftCorner(k, k);
+    Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt(diagonal);
+    if (llt.info() != Eigen::Success || !diagonal.diagonal().allFinite()) {
+      return false;
     }
     if (m > k) {
-      updates[n].resize(static_cast<size_t>(m - k) * (m - k));
-      Eigen::Map<Eigen::MatrixXd>(updates[n].data(), m - k, m - k) =
-          front.bottomRightCorner(m - k, m - k);
+      auto below = front.bottomLeftCorner(m - k, k);
+      diagonal.transpose()
+          .triangularView<Eigen::Upper>()
+          .solveInPlace<Eigen::OnTheRight>(below);
+      front.bottomRightCorner(m - k, m - k)
+          .selfadjointView<Eigen::Lower>()
+          .rankUpdate(below, -1.0);
     }
+    Panel(node) = front.leftCols(k);
+  }
+  if (m > k) {
+    updates[n].resize(static_cast<size_t>(m - k) * (m - k));
+    Eigen::Map<Eigen::MatrixXd>(updates[n].data(), m - k, m - k) =
+        front.bottomRightCorner(m - k, m - k);
   }
   return true;
 }
@@ -392,47 +678,108 @@ void UvSparseCholesky::AddToDiagonal(int unknown, double delta) {
   }
 }
 
+void UvSparseCholesky::ForwardNode(const Node &node, Eigen::MatrixXd *y,
+                                   Eigen::MatrixXd *outside, int outside_begin,
+                                   Eigen::MatrixXd *gathered) const {
+  const int k = node.num_columns;
+  if (k == 0) {
+    return;
+  }
+  const auto panel = Panel(node);
+  auto own = y->middleRows(node.first_column, k);
+  panel.topRows(k).triangularView<Eigen::Lower>().solveInPlace(own);
+  if (node.update_rows.empty()) {
+    return;
+  }
+  // Matrix-vector products per right-hand side: a matrix product would
+  // copy (pack) the whole panel for the few right-hand sides.
+  const auto below = panel.bottomRows(node.update_rows.size());
+  gathered->resize(node.update_rows.size(), own.cols());
+  for (int c = 0; c < own.cols(); ++c) {
+    gathered->col(c).noalias() = below * own.col(c);
+  }
+  for (size_t i = 0; i < node.update_rows.size(); ++i) {
+    const int row = node.update_rows[i];
+    if (outside != nullptr && row >= outside_begin) {
+      outside->row(row - outside_begin) -= gathered->row(i);
+    } else {
+      y->row(row) -= gathered->row(i);
+    }
+  }
+}
+
+void UvSparseCholesky::BackwardNode(const Node &node, Eigen::MatrixXd *y,
+                                    Eigen::MatrixXd *gathered) const {
+  const int k = node.num_columns;
+  if (k == 0) {
+    return;
+  }
+  const auto panel = Panel(node);
+  auto own = y->middleRows(node.first_column, k);
+  if (!node.update_rows.empty()) {
+    gathered->resize(node.update_rows.size(), y->cols());
+    for (size_t i = 0; i < node.update_rows.size(); ++i) {
+      gathered->row(i) = y->row(node.update_rows[i]);
+    }
+    const auto below = panel.bottomRows(node.update_rows.size());
+    for (int c = 0; c < own.cols(); ++c) {
+      own.col(c).noalias() -= below.transpose() * gathered->col(c);
+    }
+  }
+  panel.topRows(k).transpose().triangularView<Eigen::Upper>().solveInPlace(own);
+}
+
 void UvSparseCholesky::Solve(Eigen::Ref<Eigen::MatrixXd> rhs) const {
   const int num_rhs = static_cast<int>(rhs.cols());
+  const int num_nodes = static_cast<int>(nodes_.size());
   Eigen::MatrixXd y(num_unknowns(), num_rhs);
   for (int u = 0; u < num_unknowns(); ++u) {
     y.row(column_of_[u]) = rhs.row(u);
   }
-  Eigen::MatrixXd gathered;
-  for (const Node &node : nodes_) {
-    const int k = node.num_columns;
-    if (k == 0) {
-      continue;
-    }
-    const auto panel = Panel(node);
-    auto own = y.middleRows(node.first_column, k);
-    panel.topRows(k).triangularView<Eigen::Lower>().solveInPlace(own);
-    if (!node.update_rows.empty()) {
-      gathered.noalias() = panel.bottomRows(node.update_rows.size()) * own;
-      for (size_t i = 0; i < node.update_rows.size(); ++i) {
-        y.row(node.update_rows[i]) -= gathered.row(i);
-      }
-    }
+  Eigen::MatrixXd gathered, side_gathered;
+  // Forward substitution. The side subtree's updates of the columns after
+  // the join go to |outside| and are added after it, whatever the threads.
+  const int side_begin = side_ < 0 ? num_nodes : side_begin_;
+  const int side_end = side_ < 0 ? num_nodes : side_ + 1;
+  const int join = side_ < 0 ? num_nodes : join_;
+  const int outside_begin =
+      join < num_nodes ? nodes_[join].first_column : num_unknowns();
+  Eigen::MatrixXd outside =
+      Eigen::MatrixXd::Zero(num_unknowns() - outside_begin, num_rhs);
+  RunBoth(
+      [&] {
+        for (int n = side_begin; n < side_end; ++n) {
+          ForwardNode(nodes_[n], &y, &outside, outside_begin, &side_gathered);
+        }
+      },
+      [&] {
+        for (int n = 0; n < join; ++n) {
+          if (n < side_begin || n >= side_end) {
+            ForwardNode(nodes_[n], &y, nullptr, 0, &gathered);
+          }
+        }
+      });
+  y.bottomRows(outside.rows()) += outside;
+  for (int n = join; n < num_nodes; ++n) {
+    ForwardNode(nodes_[n], &y, nullptr, 0, &gathered);
   }
-  for (auto it = nodes_.rbegin(); it != nodes_.rend(); ++it) {
-    const Node &node = *it;
-    const int k = node.num_columns;
-    if (k == 0) {
-      continue;
-    }
-    const auto panel = Panel(node);
-    auto own = y.middleRows(node.first_column, k);
-    if (!node.update_rows.empty()) {
-      gathered.resize(node.update_rows.size(), num_rhs);
-      for (size_t i = 0; i < node.update_rows.size(); ++i) {
-        gathered.row(i) = y.row(node.update_rows[i]);
-      }
-      own.noalias() -=
-          panel.bottomRows(node.update_rows.size()).transpose() * gathered;
-    }
-    panel.topRows(k).transpose().triangularView<Eigen::Upper>().solveInPlace(
-        own);
+  // Back substitution: a node reads only its ancestors' columns.
+  for (int n = num_nodes - 1; n >= join; --n) {
+    BackwardNode(nodes_[n], &y, &gathered);
   }
+  RunBoth(
+      [&] {
+        for (int n = side_end - 1; n >= side_begin; --n) {
+          BackwardNode(nodes_[n], &y, &side_gathered);
+        }
+      },
+      [&] {
+        for (int n = join - 1; n >= 0; --n) {
+          if (n < side_begin || n >= side_end) {
+            BackwardNode(nodes_[n], &y, &gathered);
+          }
+        }
+      });
   for (int u = 0; u < num_unknowns(); ++u) {
     rhs.row(u) = y.row(column_of_[u]);
   }

@@ -25,8 +25,10 @@
 //
 // The fill-reducing order is a nested dissection of the matrix graph
 // [George & Liu 1978]: connected components are dissected separately, and a
-// connected subset is cut at the smallest level near the median of a
-// breadth-first level structure from a pseudo-peripheral vertex. The
+// connected subset is cut at the smaller of two balanced separators, the
+// smallest level near the median of a breadth-first level structure from a
+// pseudo-peripheral vertex a, or a level set of d_a - d_b across the
+// subset (b the farthest vertex from a), and the separator is thinned. The
 // dissection tree is the assembly tree of a multifrontal factorisation:
 // every tree node is one dense front, factorised with Eigen's blocked dense
 // kernels. Eigen's own sparse Cholesky (simplicial, AMD order) measured
@@ -39,6 +41,7 @@
 #define DRACO_EXT_UV_SPARSE_CHOLESKY_H_
 
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <Eigen/Core>
@@ -66,30 +69,38 @@ class UvSparseCholesky {
   // Orders the unknowns and computes the structure of the factor for
   // matrices whose off-diagonal entry (u, v) may be non-zero only when v is
   // a neighbour of u in |graph| (symmetric). False, before allocating the
-  // factor, when it would have more than |max_entries| entries.
+  // factor, when it would have more than |max_entries| entries. Large
+  // graphs are dissected on two threads, to the same order as on one.
   bool Analyze(const UvMatrixGraph &graph, int64_t max_entries);
 
   // Factorises |matrix| (pattern as analysed). False when the matrix is not
-  // numerically positive definite or has non-finite entries.
+  // numerically positive definite or has non-finite entries. Large
+  // factorisations put one subtree of the dissection tree on a second
+  // thread; every front's arithmetic is the same as on one thread, so the
+  // factor is bit-identical whatever the thread count and timing.
   bool Factorize(const UvSymmetricMatrix &matrix);
+
+  // At most 2 (the default) or 1 thread for Analyze(), Factorize() and
+  // Solve(); their results do not depend on it.
+  void set_max_threads(int max_threads) { max_threads_ = max_threads; }
 
   // Replaces the factor of M by the factor of M + delta e_u e_u^T (rank-one
   // update, delta >= 0), touching only the columns on the elimination path
   // of unknown |unknown|.
   void AddToDiagonal(int unknown, double delta);
 
-  // Solves M X = B in place; |rhs| has one row per unknown.
+  // Solves M X = B in place; |rhs| has one row per unknown. Large systems
+  // use two threads, with the same arithmetic as on one.
   void Solve(Eigen::Ref<Eigen::MatrixXd> rhs) const;
 
   int num_unknowns() const { return static_cast<int>(column_of_.size()); }
   // Entries of the factor, dense fronts included.
-  int64_t factor_size() const { return static_cast<int64_t>(panels_.size()); }
+  int64_t factor_size() const { return num_panel_entries_; }
   // Floating point operations of Factorize().
   double factor_flops() const {
     double flops = 0;
     for (const Node &node : nodes_) {
-      const double k = node.num_columns, r = node.update_rows.size();
-      flops += k * k * k / 3 + k * k * r + k * r * r;
+      flops += NodeFlops(node);
     }
     return flops;
   }
@@ -111,7 +122,37 @@ class UvSparseCholesky {
 
   class Dissection;
 
+  static double NodeFlops(const Node &node) {
+    const double k = node.num_columns, r = node.update_rows.size();
+    return k * k * k / 3 + k * k * r + k * r * r;
+  }
+
   void ComputeUpdateRows(const UvMatrixGraph &graph);
+  // The subtree to factorise and solve on a second thread (its root node),
+  // or -1 for one thread: the one that splits the work below its ancestors
+  // most evenly.
+  int SideSubtree() const;
+  // Runs |side| on a second thread and |other| on this one, or both here.
+  template <typename Side, typename Other>
+  void RunBoth(const Side &side, const Other &other) const;
+  // Forward substitution of one node; with |outside|, updates of rows from
+  // |outside_begin| on go to outside->row(row - outside_begin).
+  void ForwardNode(const Node &node, Eigen::MatrixXd *y,
+                   Eigen::MatrixXd *outside, int outside_begin,
+                   Eigen::MatrixXd *gathered) const;
+  void BackwardNode(const Node &node, Eigen::MatrixXd *y,
+                    Eigen::MatrixXd *gathered) const;
+  // Factorises nodes begin .. end - 1 except skip_begin .. skip_end - 1, in
+  // order, with their own workspace. |updates| holds every node's update
+  // matrix until its parent has assembled it.
+  bool FactorizeNodes(const UvSymmetricMatrix &matrix, int begin, int end,
+                      int skip_begin, int skip_end,
+                      std::vector<std::vector<double>> *updates);
+  bool FactorizeNode(const UvSymmetricMatrix &matrix, int n,
+                     std::vector<int> *front_index,
+                     std::vector<double> *front_storage,
+                     std::vector<int> *columns,
+                     std::vector<std::vector<double>> *updates);
   // The front's global column numbers, own columns first.
   void FrontColumns(const Node &node, std::vector<int> *columns) const;
   Eigen::Map<Eigen::MatrixXd> Panel(const Node &node);
@@ -119,11 +160,20 @@ class UvSparseCholesky {
   // Updates column |local| of |node| and the entries of |w| it touches.
   void UpdateColumn(Node &node, int local, std::vector<double> *w);
 
-  std::vector<Node> nodes_;         // Children before parents.
-  std::vector<int> column_of_;      // Unknown -> column.
-  std::vector<int> unknown_of_;     // Column -> unknown.
+  std::vector<Node> nodes_;        // Children before parents.
+  std::vector<int> parent_;        // Node -> parent node, -1 for roots.
+  std::vector<int> subtree_size_;  // Nodes in the subtree of a node.
+  std::vector<int> column_of_;     // Unknown -> column.
+  std::vector<int> unknown_of_;    // Column -> unknown.
   std::vector<int> node_of_column_;
-  std::vector<double> panels_;
+  std::unique_ptr<double[]> panels_;
+  int64_t num_panel_entries_ = 0;
+  int max_threads_ = 2;
+  // The side subtree (nodes side_begin_ .. side_, or none when side_ < 0)
+  // and the first node after it that depends on it (join_).
+  int side_ = -1;
+  int side_begin_ = 0;
+  int join_ = 0;
 };
 
 }  // namespace draco

@@ -1,0 +1,140 @@
+// Copyright 2026 The draco-uv Authors.
+//
+// Licensed under the Apache License, Version 2.0 (the "License");
+// you may not use this file except in compliance with the License.
+// You may obtain a copy of the License at
+//
+//      http://www.apache.org/licenses/LICENSE-2.0
+//
+// Unless required by applicable law or agreed to in writing, software
+// distributed under the License is distributed on an "AS IS" BASIS,
+// WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+// See the License for the specific language governing permissions and
+// limitations under the License.
+//
+#include "draco_ext/uv_sparse_cholesky.h"
+
+#include <cstdint>
+
+#include "gtest/gtest.h"
+
+namespace draco {
+namespace {
+
+// The 9-point graph Laplacian of a side x side grid plus the identity: a
+// positive definite matrix with a two-dimensional pattern, like the normal
+// equations of a mesh.
+struct GridSystem {
+  UvMatrixGraph graph;
+  UvSymmetricMatrix matrix;
+};
+
+GridSystem MakeGridSystem(int side) {
+  GridSystem s;
+  const int n = side * side;
+  s.matrix.size = n;
+  s.matrix.column_start.push_back(0);
+  s.graph.start.push_back(0);
+  for (int y = 0; y < side; ++y) {
+    for (int x = 0; x < side; ++x) {
+      const int u = y * side + x;
+      int degree = 0;
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+          const int nx = x + dx, ny = y + dy;
+          if ((dx == 0 && dy == 0) || nx < 0 || ny < 0 || nx >= side ||
+              ny >= side) {
+            continue;
+          }
+          s.graph.neighbour.push_back(ny * side + nx);
+          s.matrix.row.push_back(ny * side + nx);
+          s.matrix.value.push_back(-1.0 - 0.01 * ((u + nx + ny) % 7));
+          ++degree;
+        }
+      }
+      s.matrix.row.push_back(u);
+      s.matrix.value.push_back(12.0 + degree);
+      s.graph.start.push_back(static_cast<int>(s.graph.neighbour.size()));
+      s.matrix.column_start.push_back(static_cast<int>(s.matrix.row.size()));
+    }
+  }
+  // Symmetric values: average the two triangles' entries.
+  for (int u = 0; u < n; ++u) {
+    for (int e = s.matrix.column_start[u]; e < s.matrix.column_start[u + 1];
+         ++e) {
+      const int v = s.matrix.row[e];
+      if (v <= u) {
+        continue;
+      }
+      for (int f = s.matrix.column_start[v]; f < s.matrix.column_start[v + 1];
+           ++f) {
+        if (s.matrix.row[f] == u) {
+          s.matrix.value[e] = s.matrix.value[f] =
+              0.5 * (s.matrix.value[e] + s.matrix.value[f]);
+        }
+      }
+    }
+  }
+  return s;
+}
+
+Eigen::MatrixXd Multiply(const UvSymmetricMatrix &m, const Eigen::MatrixXd &x) {
+  Eigen::MatrixXd y = Eigen::MatrixXd::Zero(x.rows(), x.cols());
+  for (int u = 0; u < m.size; ++u) {
+    for (int e = m.column_start[u]; e < m.column_start[u + 1]; ++e) {
+      y.row(m.row[e]) += m.value[e] * x.row(u);
+    }
+  }
+  return y;
+}
+
+TEST(UvSparseCholeskyTest, SolvesALargeGridSystem) {
+  const GridSystem s = MakeGridSystem(200);
+  UvSparseCholesky cholesky;
+  ASSERT_TRUE(cholesky.Analyze(s.graph, int64_t{1} << 26));
+  ASSERT_TRUE(cholesky.Factorize(s.matrix));
+  const Eigen::MatrixXd x = Eigen::MatrixXd::Random(s.matrix.size, 2);
+  Eigen::MatrixXd b = Multiply(s.matrix, x);
+  cholesky.Solve(b);
+  EXPECT_LT((b - x).cwiseAbs().maxCoeff(), 1e-9);
+}
+
+TEST(UvSparseCholeskyTest, TwoThreadsGiveTheSameFactorAsOne) {
+  // Large enough for Factorize() to use a second thread.
+  const GridSystem s = MakeGridSystem(200);
+  UvSparseCholesky one, two;
+  one.set_max_threads(1);
+  ASSERT_TRUE(one.Analyze(s.graph, int64_t{1} << 26));
+  ASSERT_TRUE(two.Analyze(s.graph, int64_t{1} << 26));
+  ASSERT_GT(one.factor_flops(), 1e8);
+  ASSERT_TRUE(one.Factorize(s.matrix));
+  const Eigen::MatrixXd rhs = Eigen::MatrixXd::Random(s.matrix.size, 2);
+  Eigen::MatrixXd expected = rhs;
+  one.Solve(expected);
+  for (int run = 0; run < 3; ++run) {
+    ASSERT_TRUE(two.Factorize(s.matrix));
+    Eigen::MatrixXd x = rhs;
+    two.Solve(x);
+    EXPECT_TRUE((x.array() == expected.array()).all()) << "run " << run;
+  }
+}
+
+TEST(UvSparseCholeskyTest, RejectsIndefiniteMatricesInAnySubtree) {
+  GridSystem s = MakeGridSystem(200);
+  UvSparseCholesky cholesky;
+  ASSERT_TRUE(cholesky.Analyze(s.graph, int64_t{1} << 26));
+  // Negative diagonals at both ends of the grid, in different subtrees.
+  for (const int u : {0, s.matrix.size - 1}) {
+    GridSystem bad = s;
+    for (int e = bad.matrix.column_start[u]; e < bad.matrix.column_start[u + 1];
+         ++e) {
+      if (bad.matrix.row[e] == u) {
+        bad.matrix.value[e] = -1.0;
+      }
+    }
+    EXPECT_FALSE(cholesky.Factorize(bad.matrix)) << "unknown " << u;
+  }
+}
+
+}  // namespace
+}  // namespace draco
