@@ -380,8 +380,7 @@ bool UvSparseCholesky::Analyze(const UvMatrixGraph &graph,
   std::vector<int> all(n);
   std::iota(all.begin(), all.end(), 0);
   if (n > 0) {
-    const bool may_spawn =
-        max_threads_ > 1 && std::thread::hardware_concurrency() > 1;
+    const bool may_spawn = MayUseSecondThread();
     Dissection(graph).Dissect(std::move(all), may_spawn, &nodes_, &unknown_of_);
   }
   column_of_.assign(n, 0);
@@ -502,9 +501,18 @@ bool UvSparseCholesky::Factorize(const UvSymmetricMatrix &matrix) {
          FactorizeNodes(matrix, join_, num_nodes, -1, -1, &updates);
 }
 
+bool UvSparseCholesky::MayUseSecondThread() const {
+#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
+  // WebAssembly without threads: std::thread would abort.
+  return false;
+#else
+  return max_threads_ > 1 && std::thread::hardware_concurrency() > 1;
+#endif
+}
+
 template <typename Side, typename Other>
 void UvSparseCholesky::RunBoth(const Side &side, const Other &other) const {
-  if (max_threads_ < 2 || std::thread::hardware_concurrency() < 2) {
+  if (!MayUseSecondThread()) {
     side();
     other();
     return;

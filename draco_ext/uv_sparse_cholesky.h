@@ -132,6 +132,9 @@ class UvSparseCholesky {
   // or -1 for one thread: the one that splits the work below its ancestors
   // most evenly.
   int SideSubtree() const;
+  // True when a second thread may be used: allowed by set_max_threads(),
+  // more than one core, and not a WebAssembly build without threads.
+  bool MayUseSecondThread() const;
   // Runs |side| on a second thread and |other| on this one, or both here.
   template <typename Side, typename Other>
   void RunBoth(const Side &side, const Other &other) const;
