@@ -43,24 +43,6 @@ bool UsesDracoUvScheme(const Mesh &mesh, const ExpertEncoder &encoder) {
 
 namespace {
 
-// -uv_anchors concerns the attributes the Laplacian coder encodes; a
-// primitive without any (one without texture coordinates) ignores it.
-Status ConfigureAnchorsOfLaplacianAttributes(const std::string &spec,
-                                             const Mesh &mesh,
-                                             ExpertEncoder *encoder) {
-  for (int i = 0; i < mesh.NumNamedAttributes(GeometryAttribute::TEX_COORD);
-       ++i) {
-    const int att_id =
-        mesh.GetNamedAttributeId(GeometryAttribute::TEX_COORD, i);
-    if (encoder->options().GetAttributeInt(att_id, "prediction_scheme",
-                                           PREDICTION_UNDEFINED) ==
-        MESH_PREDICTION_TEX_COORDS_LAPLACIAN) {
-      return ConfigureUvAnchors(spec, &mesh, encoder);
-    }
-  }
-  return OkStatus();
-}
-
 // What naming kUvGltfExtension in extensionsUsed and extensionsRequired adds
 // to the JSON that Draco's glTF writer emits: twice the quoted name, a comma
 // and the writer's indentation (76 bytes measured on sphere.gltf), rounded up
@@ -119,8 +101,10 @@ Status ConfigureUvCompressionForGltf(
       GetUvSeamCoding(encoder.options()) != UvSeamCoding::kDraco;
   DRACO_RETURN_IF_ERROR(
       ConfigureUvPrediction(options.prediction, &mesh, &encoder).status());
+  // A primitive without Laplacian-coded texture coordinates ignores
+  // -uv_anchors (CheckUvCompressionOptions() ties it to a Laplacian name).
   DRACO_RETURN_IF_ERROR(
-      ConfigureAnchorsOfLaplacianAttributes(options.anchors, mesh, &encoder));
+      ApplyUvAnchors(options.anchors, &mesh, &encoder).status());
   // With context seams the primitive needs the extension anyway.
   if (IsAutoUvPrediction(options.prediction) && !context_seams &&
       extensions_required->count(kUvGltfExtension) == 0 &&

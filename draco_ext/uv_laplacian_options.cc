@@ -130,13 +130,13 @@ Status ConfigureUvLaplacian(const std::string &name, int att_id,
   return OkStatus();
 }
 
-Status ConfigureUvAnchors(const std::string &spec, const Mesh *mesh,
-                          ExpertEncoder *encoder) {
+StatusOr<int> ApplyUvAnchors(const std::string &spec, const Mesh *mesh,
+                             ExpertEncoder *encoder) {
   if (spec.empty()) {
-    return OkStatus();
+    return 0;
   }
   DRACO_ASSIGN_OR_RETURN(const UvAnchorSpec parsed, ParseUvAnchorSpec(spec));
-  bool applied = false;
+  int applied = 0;
   for (int i = 0; mesh != nullptr &&
                   i < mesh->NumNamedAttributes(GeometryAttribute::TEX_COORD);
        ++i) {
@@ -151,9 +151,16 @@ Status ConfigureUvAnchors(const std::string &spec, const Mesh *mesh,
         AnchorCount(parsed, mesh->attribute(att_id)->size()));
     encoder->options().SetAttributeInt(att_id, kUvLaplacianRandomAnchorsOption,
                                        parsed.random ? 1 : 0);
-    applied = true;
+    ++applied;
   }
-  if (!applied) {
+  return applied;
+}
+
+Status ConfigureUvAnchors(const std::string &spec, const Mesh *mesh,
+                          ExpertEncoder *encoder) {
+  DRACO_ASSIGN_OR_RETURN(const int applied,
+                         ApplyUvAnchors(spec, mesh, encoder));
+  if (!spec.empty() && applied == 0) {
     return Status(Status::DRACO_ERROR,
                   "-uv_anchors needs -uv_pred laplacian_tutte, "
                   "laplacian_cotan or laplacian_mv.");

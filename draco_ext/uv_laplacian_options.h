@@ -63,8 +63,13 @@ StatusOr<UvAnchorSpec> ParseUvAnchorSpec(const std::string &spec);
 
 // Applies -uv_anchors |spec| (ParseUvAnchorSpec()) to every TEX_COORD
 // attribute of |mesh| that uses the Laplacian scheme; P% becomes
-// ceil(P / 100 * the attribute's number of values). An empty spec changes
-// nothing; a spec without such an attribute is an error.
+// ceil(P / 100 * the attribute's number of values). Returns how many
+// attributes it set (0 for an empty spec, which changes nothing).
+StatusOr<int> ApplyUvAnchors(const std::string &spec, const Mesh *mesh,
+                             ExpertEncoder *encoder);
+
+// ApplyUvAnchors() for a command line: a spec without any such attribute
+// is an error.
 Status ConfigureUvAnchors(const std::string &spec, const Mesh *mesh,
                           ExpertEncoder *encoder);
 
