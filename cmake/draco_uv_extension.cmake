@@ -9,7 +9,8 @@ set(draco_uv_schemes "${draco_uv_root}/prediction_schemes")
 set(draco_uv_ext "${draco_uv_root}/draco_ext")
 
 list(APPEND draco_include_paths "${draco_uv_root}")
-# The Laplacian decoder's sparse Cholesky factorises on two threads.
+# The Laplacian decoder's sparse Cholesky factorises on two threads; the
+# weighted scheme computes its stencils' frames ahead on a second thread.
 find_package(Threads REQUIRED)
 link_libraries(Threads::Threads)
 # The Laplacian texture coordinate coder needs Eigen, which Draco itself puts
@@ -22,6 +23,7 @@ list(
   APPEND draco_compression_attributes_pred_schemes_dec_sources
          "${draco_uv_ext}/uv_bitstream_guard.h"
          "${draco_uv_ext}/uv_fixed_point.h"
+         "${draco_uv_ext}/uv_lookahead.h"
          "${draco_uv_ext}/uv_processing_order.h"
          "${draco_uv_schemes}/mesh_prediction_scheme_tex_coords_laplacian_decoder.h"
          "${draco_uv_schemes}/mesh_prediction_scheme_tex_coords_laplacian_shared.h"

@@ -37,6 +37,7 @@
 #include "draco/attributes/point_attribute.h"
 #include "draco/attributes/geometry_indices.h"
 #include "draco_ext/uv_corner_graph.h"
+#include "draco_ext/uv_lookahead.h"
 #include "draco_ext/uv_processing_order.h"
 #include "draco_ext/uv_residual_coder.h"
 #include "draco_ext/uv_stencil_plan.h"
@@ -44,6 +45,13 @@
 #include "prediction_schemes/uv_stencil_geometry.h"
 
 namespace draco {
+
+// A stencil's unfolded frame, which depends only on the 3D positions;
+// |usable| is false for degenerate or extreme 3D stencils.
+struct UvComputedFrame {
+  UvStencilFrame frame;
+  bool usable = false;
+};
 
 // Predicts the texture coordinates of the entries (UV vertices) of one
 // attribute, in a UvProcessingOrder, from the entries processed before and
@@ -78,6 +86,12 @@ namespace draco {
 // Weak on layouts unrelated to the geometry (hand-made, mirrored or packed
 // islands) and on chart starts, which are pure deltas; many-chart atlases
 // spend a large share of their bits there.
+//
+// Threads: the stencils and frames of the reach kinds depend only on the
+// connectivity and the positions, so RunUvPrediction() computes them ahead
+// on a second thread (UvLookahead) for attributes of at least
+// kMinEntriesForLookaheadThread entries, unless set_max_threads(1). The
+// predictions are the same either way.
 template <typename DataTypeT>
 class MeshPredictionSchemeTexCoordsWeightedPredictor {
  public:
@@ -92,18 +106,27 @@ class MeshPredictionSchemeTexCoordsWeightedPredictor {
     entry_to_point_id_map_ = map;
   }
   bool IsInitialized() const { return pos_attribute_ != nullptr; }
+  // At most this many threads run a prediction pass (RunUvPrediction()).
+  void set_max_threads(int max_threads) { max_threads_ = max_threads; }
+  int max_threads() const { return max_threads_; }
 
   typedef UvStencilPlan::Stencil Stencil;
 
   // Prepares one pass over the entries of |order|, which must outlive it.
   void Start(UvPredictorKind kind, const UvProcessingOrder &order);
 
+  // The frame of |stencil| with tip |tip|. Reads only the positions cached
+  // by Start(), so other threads may call it during a pass.
+  UvComputedFrame ComputeFrame(const Stencil &stencil, int32_t tip) const;
+
   // Computes predicted_value() and context() for the entry at |step| of the
   // order from its stencils and known neighbours (both lists must stay valid
   // until Update()); |data| holds the values of all earlier steps' entries.
+  // |frames| is null or holds ComputeFrame() of each stencil (then at most
+  // kMaxStencils of them).
   void Predict(int step, const Stencil *stencils, int num_stencils,
                const int32_t *neighbours, int num_neighbours,
-               const DataTypeT *data);
+               const DataTypeT *data, const UvComputedFrame *frames = nullptr);
 
   // Records the value (now in |data|) and the correction of the entry just
   // predicted at |step|.
@@ -150,9 +173,10 @@ class MeshPredictionSchemeTexCoordsWeightedPredictor {
   void ShiftPositions(ValueT value);
   void SelectStencils(const Stencil *stencils, int num_stencils);
   int OrientationFor(const Uv &f, const Uv &g, bool has_b);
-  void PredictStencil(const Stencil &stencil, int32_t tip,
+  void PredictStencil(const Stencil &stencil, const UvComputedFrame &frame,
                       const DataTypeT *data, Uv *affine, Uv *similarity);
-  void ComputeCandidates(int32_t tip, const DataTypeT *data);
+  void ComputeCandidates(int32_t tip, const DataTypeT *data,
+                         const UvComputedFrame *frames);
   void ComputeFallback(int step, const DataTypeT *data);
   int ChooseCandidate() const;
   void ComputeContext();
@@ -160,6 +184,7 @@ class MeshPredictionSchemeTexCoordsWeightedPredictor {
   const PointAttribute *pos_attribute_ = nullptr;
   const PointIndex *entry_to_point_id_map_ = nullptr;
   UvPredictorKind kind_ = UvPredictorKind::kAdaptive;
+  int max_threads_ = 2;
   const UvProcessingOrder *order_ = nullptr;
   int num_entries_ = 0;
 
@@ -297,34 +322,44 @@ int MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::OrientationFor(
 }
 
 template <typename DataTypeT>
+UvComputedFrame
+MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::ComputeFrame(
+    const Stencil &stencil, int32_t tip) const {
+  const bool has_b = stencil.b != UvCornerGraph::kNone;
+  UvComputedFrame result;
+  result.usable = ComputeUvStencilFrame(
+      PositionOf(stencil.l), PositionOf(stencil.r), PositionOf(tip),
+      PositionOf(has_b ? stencil.b : stencil.l), has_b, &result.frame);
+  return result;
+}
+
+template <typename DataTypeT>
 void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::PredictStencil(
-    const Stencil &stencil, int32_t tip, const DataTypeT *data, Uv *affine,
-    Uv *similarity) {
+    const Stencil &stencil, const UvComputedFrame &frame,
+    const DataTypeT *data, Uv *affine, Uv *similarity) {
   const Uv uv_l = UvOf(data, stencil.l);
   const Uv uv_r = UvOf(data, stencil.r);
   const bool has_b = stencil.b != UvCornerGraph::kNone;
   const Uv f = uv_r - uv_l;
   const Uv g = has_b ? UvOf(data, stencil.b) - uv_l : Uv(0, 0);
-  UvStencilFrame frame;
-  // Checking f and g first also bounds the cross product above below 2^41.
+  // Checking f and g first also bounds the cross product in
+  // OrientationFor() below 2^41.
   if (!IsSupportedUvDifference(f) || !IsSupportedUvDifference(g) ||
-      !ComputeUvStencilFrame(PositionOf(stencil.l), PositionOf(stencil.r),
-                             PositionOf(tip),
-                             PositionOf(has_b ? stencil.b : stencil.l), has_b,
-                             &frame)) {
+      !frame.usable) {
     *similarity = *affine = PredictMidpointQ16(uv_l, uv_r);
     return;
   }
   *similarity = ClampPredictionQ16(
-      PredictSimilarityQ16(frame, uv_l, f, OrientationFor(f, g, has_b)));
-  *affine = frame.has_opposite
-                ? ClampPredictionQ16(PredictAffineQ16(frame, uv_l, f, g))
+      PredictSimilarityQ16(frame.frame, uv_l, f, OrientationFor(f, g, has_b)));
+  *affine = frame.frame.has_opposite
+                ? ClampPredictionQ16(PredictAffineQ16(frame.frame, uv_l, f, g))
                 : *similarity;
 }
 
 template <typename DataTypeT>
 void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::
-    ComputeCandidates(int32_t tip, const DataTypeT *data) {
+    ComputeCandidates(int32_t tip, const DataTypeT *data,
+                      const UvComputedFrame *frames) {
   // The adaptive kinds need every candidate (for the errors they learn
   // from); the agreement weight needs several stencils to matter.
   const bool all_candidates = IsAdaptive();
@@ -336,7 +371,9 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::
   for (int i = 0; i < num_stencils_; ++i) {
     const Stencil &stencil = stencils_[i];
     Uv affine, similarity;
-    PredictStencil(stencil, tip, data, &affine, &similarity);
+    PredictStencil(stencil,
+                   frames != nullptr ? frames[i] : ComputeFrame(stencil, tip),
+                   data, &affine, &similarity);
     affine_sum = affine_sum + affine;
     similarity_sum = similarity_sum + similarity;
     if (all_candidates && stencil.b != UvCornerGraph::kNone) {
@@ -423,14 +460,16 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::ComputeContext()
 template <typename DataTypeT>
 void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::Predict(
     int step, const Stencil *stencils, int num_stencils,
-    const int32_t *neighbours, int num_neighbours, const DataTypeT *data) {
+    const int32_t *neighbours, int num_neighbours, const DataTypeT *data,
+    const UvComputedFrame *frames) {
+  DRACO_DCHECK(frames == nullptr || num_stencils <= kMaxStencils);
   SelectStencils(stencils, num_stencils);
   neighbours_ = neighbours;
   num_neighbours_ = num_neighbours;
   if (num_stencils_ == 0) {
     ComputeFallback(step, data);
   } else {
-    ComputeCandidates(order_->entries[step], data);
+    ComputeCandidates(order_->entries[step], data, frames);
   }
   const Uv &chosen = candidates_[ChooseCandidate()];
   for (int i = 0; i < kUvNumComponents; ++i) {
@@ -470,13 +509,12 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::Update(
 
 namespace uv_prediction_internal {
 
-// The stencil of the face of |corner| if its other two vertices are known
-// (entries below |p|, Draco's order), with B if known too, and those known
-// vertices as neighbours (up to 3). Returns the number of stencils, 0 or 1.
+// The face of |corner| as a stencil: its vertices known at entry |p| (below
+// |p| in Draco's order), kNone for the others. Returns the number of
+// stencils it makes, 1 when L and R are known and distinct, else 0.
 template <class MeshDataT>
 int StencilOfCorner(const MeshDataT &mesh_data, int p, CornerIndex corner,
-                    UvStencilPlan::Stencil *stencil, int32_t *neighbours,
-                    int *num_neighbours) {
+                    UvStencilPlan::Stencil *stencil) {
   const auto &table = *mesh_data.corner_table();
   const auto &vertex_to_entry = *mesh_data.vertex_to_data_map();
   const auto known_entry = [&](CornerIndex c) -> int32_t {
@@ -490,38 +528,28 @@ int StencilOfCorner(const MeshDataT &mesh_data, int p, CornerIndex corner,
     const int32_t entry = vertex_to_entry[v.value()];
     return entry >= 0 && entry < p ? entry : UvCornerGraph::kNone;
   };
-  const int32_t l = known_entry(table.Next(corner));
-  const int32_t r = known_entry(table.Previous(corner));
-  const int32_t b = known_entry(table.Opposite(corner));
-  *num_neighbours = 0;
-  for (const int32_t entry : {l, r, b}) {
-    if (entry != UvCornerGraph::kNone) {
-      neighbours[(*num_neighbours)++] = entry;
-    }
-  }
-  *stencil = {l, r, b};
-  return l != UvCornerGraph::kNone && r != UvCornerGraph::kNone && l != r;
+  *stencil = {known_entry(table.Next(corner)),
+              known_entry(table.Previous(corner)),
+              known_entry(table.Opposite(corner))};
+  return stencil->l != UvCornerGraph::kNone &&
+         stencil->r != UvCornerGraph::kNone && stencil->l != stencil->r;
 }
 
 // The stencil of the face through which Draco's traversal reached entry
 // |p|. When that face has none (Draco's traversal never crosses its start
 // face's third edge, so it may restart a chart next to known vertices), the
 // first face around the vertex that has one, swinging left then right up to
-// a boundary or a degenerate face; without any, the known vertices of the
-// reach face.
+// a boundary or a degenerate face; without any, the reach face's known
+// vertices. Returns the number of stencils, 0 or 1.
 template <class MeshDataT>
 int ReachStencil(const MeshDataT &mesh_data, int p,
-                 UvStencilPlan::Stencil *stencil, int32_t *neighbours,
-                 int *num_neighbours) {
+                 UvStencilPlan::Stencil *stencil) {
   const auto &table = *mesh_data.corner_table();
   const CornerIndex reach = (*mesh_data.data_to_corner_map())[p];
-  if (StencilOfCorner(mesh_data, p, reach, stencil, neighbours,
-                      num_neighbours)) {
+  if (StencilOfCorner(mesh_data, p, reach, stencil)) {
     return 1;
   }
   UvStencilPlan::Stencil other;
-  int32_t other_neighbours[3];
-  int num_other_neighbours;
   CornerIndex corner = table.SwingLeft(reach);
   bool swinging_left = true;
   for (int steps = 0; steps < table.num_corners() && corner != reach; ++steps) {
@@ -536,16 +564,82 @@ int ReachStencil(const MeshDataT &mesh_data, int p,
       corner = table.SwingRight(reach);
       continue;
     }
-    if (StencilOfCorner(mesh_data, p, corner, &other, other_neighbours,
-                        &num_other_neighbours)) {
+    if (StencilOfCorner(mesh_data, p, corner, &other)) {
       *stencil = other;
-      std::copy(other_neighbours, other_neighbours + 3, neighbours);
-      *num_neighbours = num_other_neighbours;
       return 1;
     }
     corner = swinging_left ? table.SwingLeft(corner) : table.SwingRight(corner);
   }
   return 0;
+}
+
+// The known vertices of |stencil|, which are the neighbours of its tip.
+inline int KnownVerticesOf(const UvStencilPlan::Stencil &stencil,
+                           int32_t *vertices) {
+  int count = 0;
+  for (const int32_t entry : {stencil.l, stencil.r, stencil.b}) {
+    if (entry != UvCornerGraph::kNone) {
+      vertices[count++] = entry;
+    }
+  }
+  return count;
+}
+
+// What a step of Draco's order needs from the connectivity and the
+// positions alone, so that it can be computed ahead (UvLookahead).
+struct ReachStep {
+  UvStencilPlan::Stencil stencil;
+  UvComputedFrame frame;  // Of the stencil, if any.
+  int32_t num_stencils;
+};
+
+// Smallest number of entries for which a second thread computes the reach
+// steps ahead: starting a thread costs about as much as 400 steps here.
+constexpr int kMinEntriesForLookaheadThread = 1024;
+
+template <typename DataTypeT, class MeshDataT>
+void ComputeReachSteps(
+    const MeshDataT &mesh_data,
+    const MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT> &predictor,
+    int begin, int end, ReachStep *out) {
+  for (int p = begin; p < end; ++p, ++out) {
+    out->num_stencils = ReachStencil(mesh_data, p, &out->stencil);
+    out->frame = out->num_stencils > 0 ? predictor.ComputeFrame(out->stencil, p)
+                                       : UvComputedFrame();
+  }
+}
+
+// RunUvPrediction() for the kinds that use the reach stencil: the stencils
+// and their frames are computed ahead, on a second thread if allowed.
+template <typename DataTypeT, class MeshDataT, class ProcessT>
+bool RunReachPrediction(
+    const MeshDataT &mesh_data, const UvPredictionConfig &config,
+    const DataTypeT *data,
+    MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT> *predictor,
+    ProcessT process) {
+  const auto &data_to_corner = *mesh_data.data_to_corner_map();
+  const int num_entries = static_cast<int>(data_to_corner.size());
+  UvProcessingOrder order;
+  BuildDataOrder(data_to_corner, &order);
+  predictor->Start(config.kind, order);
+  const bool use_thread = predictor->max_threads() > 1 &&
+                          num_entries >= kMinEntriesForLookaheadThread &&
+                          UvSecondThreadAvailable();
+  UvLookahead<ReachStep> steps(
+      num_entries, use_thread, [&](int begin, int end, ReachStep *out) {
+        ComputeReachSteps(mesh_data, *predictor, begin, end, out);
+      });
+  int32_t neighbours[3];
+  for (int p = 0; p < num_entries; ++p) {
+    const ReachStep &step = steps.Get(p);
+    predictor->Predict(p, &step.stencil, step.num_stencils, neighbours,
+                       KnownVerticesOf(step.stencil, neighbours), data,
+                       &step.frame);
+    if (!process(p, p)) {
+      return false;
+    }
+  }
+  return true;
 }
 
 }  // namespace uv_prediction_internal
@@ -561,25 +655,12 @@ bool RunUvPrediction(
     const DataTypeT *data,
     MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT> *predictor,
     ProcessT process) {
+  if (UsesReachStencil(config.kind)) {
+    return uv_prediction_internal::RunReachPrediction(mesh_data, config, data,
+                                                      predictor, process);
+  }
   const auto &data_to_corner = *mesh_data.data_to_corner_map();
   UvProcessingOrder order;
-  if (UsesReachStencil(config.kind)) {
-    BuildDataOrder(data_to_corner, &order);
-    predictor->Start(config.kind, order);
-    UvStencilPlan::Stencil stencil;
-    int32_t neighbours[3];
-    int num_neighbours;
-    for (int p = 0; p < static_cast<int>(data_to_corner.size()); ++p) {
-      const int num_stencils = uv_prediction_internal::ReachStencil(
-          mesh_data, p, &stencil, neighbours, &num_neighbours);
-      predictor->Predict(p, &stencil, num_stencils, neighbours, num_neighbours,
-                         data);
-      if (!process(p, p)) {
-        return false;
-      }
-    }
-    return true;
-  }
   UvCornerGraph graph;
   BuildUvCornerGraph(mesh_data, &graph);
   if (config.max_degree_order) {

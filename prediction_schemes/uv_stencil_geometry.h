@@ -76,11 +76,13 @@ inline bool IsSupportedUvDifference(const UvStencilUv &d) {
 
 // The tip's unfolded coordinates: s and h of the tip O, sb and the height
 // ratio h / hb of the opposite vertex B, all in Q16.
+// Their magnitudes are at most 2^24 + 1 (coefficients are bounded by
+// kUvStencilMaxCoefficient), and every product below widens them to 64 bits.
 struct UvStencilFrame {
-  int64_t s = 0;
-  int64_t h = 0;
-  int64_t sb = 0;
-  int64_t height_ratio = 0;
+  int32_t s = 0;
+  int32_t h = 0;
+  int32_t sb = 0;
+  int32_t height_ratio = 0;
   bool has_opposite = false;
 };
 
@@ -168,8 +170,8 @@ inline bool ComputeUvStencilFrame(const UvStencilPos &l, const UvStencilPos &r,
   }
   const int64_t inv_ee =
       static_cast<int64_t>(FloorDivide(uint64_t{1} << kReciprocalBits, ee));
-  frame->s = MultiplyShiftRounded(ed, inv_ee, kShift);
-  frame->h = MultiplyShiftRounded(hd, inv_ee, kShift);
+  frame->s = static_cast<int32_t>(MultiplyShiftRounded(ed, inv_ee, kShift));
+  frame->h = static_cast<int32_t>(MultiplyShiftRounded(hd, inv_ee, kShift));
   frame->has_opposite = false;
   if (has_b) {
     const int64_t eb = Dot(v.e, v.b);
@@ -178,8 +180,10 @@ inline bool ComputeUvStencilFrame(const UvStencilPos &l, const UvStencilPos &r,
         hd <= kMaxRatio * hb) {
       const int64_t inv_hb = static_cast<int64_t>(
           FloorDivide(uint64_t{1} << kReciprocalBits, hb));
-      frame->sb = MultiplyShiftRounded(eb, inv_ee, kShift);
-      frame->height_ratio = MultiplyShiftRounded(hd, inv_hb, kShift);
+      frame->sb =
+          static_cast<int32_t>(MultiplyShiftRounded(eb, inv_ee, kShift));
+      frame->height_ratio =
+          static_cast<int32_t>(MultiplyShiftRounded(hd, inv_hb, kShift));
       frame->has_opposite = true;
     }
   }

@@ -103,8 +103,10 @@ class WeightedPredictionHarness {
   const std::vector<int32_t> &values() const { return values_; }
 
   // The wrapped residuals of a predictor pass with |config|.
-  std::vector<int32_t> Residuals(const UvPredictionConfig &config) {
+  std::vector<int32_t> Residuals(const UvPredictionConfig &config,
+                                 int max_threads = 2) {
     MeshPredictionSchemeTexCoordsWeightedPredictor<int32_t> predictor;
+    predictor.set_max_threads(max_threads);
     predictor.SetPositionAttribute(*position());
     predictor.SetEntryToPointIdMap(point_ids_.data());
     PredictionSchemeWrapEncodingTransform<int32_t> transform;
@@ -238,6 +240,33 @@ TEST(MeshPredictionSchemeTexCoordsWeightedTest, DecoderInvertsEncoderOnRandomUvs
         [&](int, int) { return VectorD<int32_t, 2>(uv(rng), uv(rng)); });
     WeightedPredictionHarness harness(*mesh);
     EXPECT_EQ(harness.RoundTrip(), harness.values()) << "range " << range;
+  }
+}
+
+// The reach kinds compute stencils and frames ahead on a second thread for
+// large meshes; the residuals must not depend on it. Smooth texture
+// coordinates exercise the stencils, noisy ones the fallbacks.
+TEST(MeshPredictionSchemeTexCoordsWeightedTest,
+     ReachPredictionIsTheSameOnOneAndTwoThreads) {
+  std::mt19937 rng(29);
+  std::uniform_int_distribution<int32_t> noise(-3, 3);
+  for (const int noise_scale : {0, 1, 1000}) {
+    const auto mesh = MakeGridMesh(
+        60, VectorD<int32_t, 3>(0, 0, 0), VectorD<int32_t, 3>(30, 1, -4),
+        VectorD<int32_t, 3>(2, 28, 9), [&](int i, int j) {
+          return VectorD<int32_t, 2>(
+              5 * i + j * j / 7 + noise_scale * noise(rng) + 4000,
+              3 * j - i * j / 9 + noise_scale * noise(rng) + 4000);
+        });
+    WeightedPredictionHarness harness(*mesh);
+    for (const UvPredictorKind kind :
+         {UvPredictorKind::kReachAdaptive, UvPredictorKind::kReachMean}) {
+      const UvPredictionConfig config{false, kind, true};
+      const std::vector<int32_t> one_thread = harness.Residuals(config, 1);
+      EXPECT_GT(CountNonZero(one_thread), 0);
+      EXPECT_EQ(harness.Residuals(config, 2), one_thread)
+          << "noise " << noise_scale << " kind " << static_cast<int>(kind);
+    }
   }
 }
 
