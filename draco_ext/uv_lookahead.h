@@ -23,16 +23,27 @@
 #include <memory>
 #include <thread>
 
+#if defined(__linux__)
+#include <sched.h>
+#endif
+
 #include "draco/core/macros.h"
 
 namespace draco {
 
-// True when this build and machine can run a second thread: more than one
-// core, and not a WebAssembly build without threads (where std::thread
-// aborts).
+// True when a second thread can run alongside this one: more than one core
+// this process may use (on Linux its CPU affinity, so that `taskset -c 0`
+// gives one thread), and not a WebAssembly build without threads (where
+// std::thread aborts).
 inline bool UvSecondThreadAvailable() {
 #if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
   return false;
+#elif defined(__linux__)
+  cpu_set_t cpus;
+  if (sched_getaffinity(0, sizeof(cpus), &cpus) == 0) {
+    return CPU_COUNT(&cpus) > 1;
+  }
+  return std::thread::hardware_concurrency() > 1;
 #else
   return std::thread::hardware_concurrency() > 1;
 #endif
