@@ -31,11 +31,29 @@
 
 namespace draco {
 
-// True when a second thread can run alongside this one: more than one core
-// this process may use (on Linux its CPU affinity, so that `taskset -c 0`
-// gives one thread), and not a WebAssembly build without threads (where
-// std::thread aborts).
+namespace uv_lookahead_internal {
+inline std::atomic<int> &MaxThreads() {
+  static std::atomic<int> max_threads{2};
+  return max_threads;
+}
+}  // namespace uv_lookahead_internal
+
+// Process-wide cap on the threads that draco-uv's coders use at once
+// (default 2). With 1 they never start a thread, e.g. for applications
+// that already decode many meshes in parallel. Output never depends on it.
+inline void SetUvMaxThreads(int max_threads) {
+  uv_lookahead_internal::MaxThreads().store(max_threads);
+}
+inline int UvMaxThreads() { return uv_lookahead_internal::MaxThreads().load(); }
+
+// True when a second thread can run alongside this one: allowed by
+// SetUvMaxThreads(), more than one core this process may use (on Linux its
+// CPU affinity, so that `taskset -c 0` gives one thread), and not a
+// WebAssembly build without threads (where std::thread aborts).
 inline bool UvSecondThreadAvailable() {
+  if (UvMaxThreads() < 2) {
+    return false;
+  }
 #if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
   return false;
 #elif defined(__linux__)

@@ -87,10 +87,10 @@ struct UvComputedFrame {
 // islands) and on chart starts, which are pure deltas; many-chart atlases
 // spend a large share of their bits there.
 //
-// Threads: the stencils and frames of the reach kinds depend only on the
-// connectivity and the positions, so RunUvPrediction() computes them ahead
-// on a second thread (UvLookahead) for attributes of at least
-// kMinEntriesForLookaheadThread entries, unless set_max_threads(1). The
+// Threads: stencil frames depend only on the connectivity and the
+// positions, so RunUvPrediction() computes them (and the reach kinds'
+// stencils) ahead on a second thread (UvLookahead) when there are at least
+// kMinItemsForLookaheadThread of them, unless set_max_threads(1). The
 // predictions are the same either way.
 template <typename DataTypeT>
 class MeshPredictionSchemeTexCoordsWeightedPredictor {
@@ -335,8 +335,8 @@ MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::ComputeFrame(
 
 template <typename DataTypeT>
 void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::PredictStencil(
-    const Stencil &stencil, const UvComputedFrame &frame,
-    const DataTypeT *data, Uv *affine, Uv *similarity) {
+    const Stencil &stencil, const UvComputedFrame &frame, const DataTypeT *data,
+    Uv *affine, Uv *similarity) {
   const Uv uv_l = UvOf(data, stencil.l);
   const Uv uv_r = UvOf(data, stencil.r);
   const bool has_b = stencil.b != UvCornerGraph::kNone;
@@ -593,9 +593,17 @@ struct ReachStep {
   int32_t num_stencils;
 };
 
-// Smallest number of entries for which a second thread computes the reach
-// steps ahead: starting a thread costs about as much as 400 steps here.
-constexpr int kMinEntriesForLookaheadThread = 1024;
+// Smallest number of items (steps or stencils) for which a second thread
+// computes them ahead: starting a thread costs about as much as 400 steps.
+constexpr int kMinItemsForLookaheadThread = 1024;
+
+template <typename DataTypeT>
+bool UseLookaheadThread(
+    const MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT> &predictor,
+    int num_items) {
+  return predictor.max_threads() > 1 &&
+         num_items >= kMinItemsForLookaheadThread && UvSecondThreadAvailable();
+}
 
 template <typename DataTypeT, class MeshDataT>
 void ComputeReachSteps(
@@ -622,11 +630,9 @@ bool RunReachPrediction(
   UvProcessingOrder order;
   BuildDataOrder(data_to_corner, &order);
   predictor->Start(config.kind, order);
-  const bool use_thread = predictor->max_threads() > 1 &&
-                          num_entries >= kMinEntriesForLookaheadThread &&
-                          UvSecondThreadAvailable();
   UvLookahead<ReachStep> steps(
-      num_entries, use_thread, [&](int begin, int end, ReachStep *out) {
+      num_entries, UseLookaheadThread(*predictor, num_entries),
+      [&](int begin, int end, ReachStep *out) {
         ComputeReachSteps(mesh_data, *predictor, begin, end, out);
       });
   int32_t neighbours[3];
@@ -636,6 +642,75 @@ bool RunReachPrediction(
                        KnownVerticesOf(step.stencil, neighbours), data,
                        &step.frame);
     if (!process(p, p)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+// The frames of |plan|'s stencils |begin| .. |end|, whose tips are the
+// entries of |order|'s steps.
+template <typename DataTypeT>
+void ComputePlanFrames(
+    const UvStencilPlan &plan, const UvProcessingOrder &order,
+    const MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT> &predictor,
+    int begin, int end, UvComputedFrame *out) {
+  // The step of stencil |begin|: the last one whose row starts at or before.
+  int step =
+      static_cast<int>(std::upper_bound(plan.stencil_begin.begin(),
+                                        plan.stencil_begin.end(), begin) -
+                       plan.stencil_begin.begin()) -
+      1;
+  for (int i = begin; i < end; ++i) {
+    while (plan.stencil_begin[step + 1] <= i) {
+      ++step;
+    }
+    *out++ = predictor.ComputeFrame(plan.stencils[i], order.entries[step]);
+  }
+}
+
+// RunUvPrediction() for the kinds that use every stencil of a
+// UvStencilPlan: the stencils' frames are computed ahead, on a second
+// thread if allowed.
+template <typename DataTypeT, class MeshDataT, class ProcessT>
+bool RunPlanPrediction(
+    const MeshDataT &mesh_data, const UvPredictionConfig &config,
+    const DataTypeT *data,
+    MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT> *predictor,
+    ProcessT process) {
+  const auto &data_to_corner = *mesh_data.data_to_corner_map();
+  UvProcessingOrder order;
+  UvCornerGraph graph;
+  BuildUvCornerGraph(mesh_data, &graph);
+  if (config.max_degree_order) {
+    BuildMaxDegreeOrder(graph, data_to_corner, &order);
+  } else {
+    BuildDataOrder(data_to_corner, &order);
+  }
+  UvStencilPlan plan;
+  BuildUvStencilPlan(graph, order, &plan);
+  predictor->Start(config.kind, order);
+  const int num_stencils = static_cast<int>(plan.stencils.size());
+  UvLookahead<UvComputedFrame> frames(
+      num_stencils, UseLookaheadThread(*predictor, num_stencils),
+      [&](int begin, int end, UvComputedFrame *out) {
+        ComputePlanFrames(plan, order, *predictor, begin, end, out);
+      });
+  std::vector<UvComputedFrame> step_frames;
+  for (int step = 0; step < static_cast<int>(order.entries.size()); ++step) {
+    const int s0 = plan.stencil_begin[step], s1 = plan.stencil_begin[step + 1];
+    const int n0 = plan.neighbour_begin[step];
+    // Rows longer than kMaxStencils are cut by rank inside Predict().
+    const bool with_frames = s1 - s0 <= predictor->kMaxStencils;
+    step_frames.clear();
+    for (int i = s0; with_frames && i < s1; ++i) {
+      step_frames.push_back(frames.Get(i));
+    }
+    predictor->Predict(step, plan.stencils.data() + s0, s1 - s0,
+                       plan.neighbours.data() + n0,
+                       plan.neighbour_begin[step + 1] - n0, data,
+                       with_frames ? step_frames.data() : nullptr);
+    if (!process(step, order.entries[step])) {
       return false;
     }
   }
@@ -659,29 +734,8 @@ bool RunUvPrediction(
     return uv_prediction_internal::RunReachPrediction(mesh_data, config, data,
                                                       predictor, process);
   }
-  const auto &data_to_corner = *mesh_data.data_to_corner_map();
-  UvProcessingOrder order;
-  UvCornerGraph graph;
-  BuildUvCornerGraph(mesh_data, &graph);
-  if (config.max_degree_order) {
-    BuildMaxDegreeOrder(graph, data_to_corner, &order);
-  } else {
-    BuildDataOrder(data_to_corner, &order);
-  }
-  UvStencilPlan plan;
-  BuildUvStencilPlan(graph, order, &plan);
-  predictor->Start(config.kind, order);
-  for (int step = 0; step < static_cast<int>(order.entries.size()); ++step) {
-    const int s0 = plan.stencil_begin[step], n0 = plan.neighbour_begin[step];
-    predictor->Predict(step, plan.stencils.data() + s0,
-                       plan.stencil_begin[step + 1] - s0,
-                       plan.neighbours.data() + n0,
-                       plan.neighbour_begin[step + 1] - n0, data);
-    if (!process(step, order.entries[step])) {
-      return false;
-    }
-  }
-  return true;
+  return uv_prediction_internal::RunPlanPrediction(mesh_data, config, data,
+                                                   predictor, process);
 }
 
 }  // namespace draco

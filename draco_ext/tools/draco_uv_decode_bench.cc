@@ -21,7 +21,9 @@
 // decoded in interleaved rounds in this one process, so that slow phases
 // of a shared machine hit every variant alike, and the minimum over the
 // rounds is reported. The same library decodes both (stock files decode
-// exactly as with stock Draco).
+// exactly as with stock Draco). Our files are decoded with each thread cap
+// of --threads (SetUvMaxThreads()): by default as shipped (a second thread
+// computes stencil frames ahead) and on one thread.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -33,6 +35,7 @@
 #include "draco_ext/tools/uv_tool_args.h"
 #include "draco_ext/uv_encode_settings.h"
 #include "draco_ext/uv_eval.h"
+#include "draco_ext/uv_lookahead.h"
 
 namespace {
 
@@ -40,6 +43,7 @@ struct Args {
   std::string input;
   draco::UvEncodeSettings settings;
   std::vector<std::string> schemes = {"auto"};
+  std::vector<int> threads = {2, 1};
   int rounds = 30;
 };
 
@@ -51,6 +55,7 @@ void Usage() {
       "\n"
       "  --schemes LIST   -uv_pred names, default auto\n"
       "  --qp N --qt N --cl N   default 14, 12, 10\n"
+      "  --threads LIST   thread caps for our files, default 2,1\n"
       "  --rounds N       decodes of every file, default 30\n");
 }
 
@@ -69,13 +74,23 @@ bool ParseArgs(int argc, char **argv, Args *args) {
       }
     } else if (flag == "--schemes" && has_value) {
       args->schemes = draco::SplitUvToolList(argv[++i]);
+    } else if (flag == "--threads" && has_value) {
+      args->threads.clear();
+      for (const std::string &item : draco::SplitUvToolList(argv[++i])) {
+        int threads = 0;
+        if (!draco::ParseUvToolSetting(item, &threads) || threads < 1) {
+          return false;
+        }
+        args->threads.push_back(threads);
+      }
     } else if (args->input.empty() && flag.rfind("-", 0) != 0) {
       args->input = flag;
     } else {
       return false;
     }
   }
-  return !args->input.empty() && !args->schemes.empty() && args->rounds > 0;
+  return !args->input.empty() && !args->schemes.empty() &&
+         !args->threads.empty() && args->rounds > 0;
 }
 
 // Milliseconds to decode |bytes|, or a negative value when decoding fails.
@@ -112,21 +127,40 @@ bool EncodeVariants(const draco::Mesh &mesh, const Args &args,
   return true;
 }
 
-// Minimum decoding time of every file over interleaved rounds; empty when
-// a file fails to decode.
+// Minimum decoding time over interleaved rounds of stock Draco's file (first)
+// and of every other file under every thread cap (file-major); empty when a
+// file fails to decode.
 std::vector<double> MinDecodeMs(const std::vector<std::vector<char>> &files,
-                                int rounds) {
-  std::vector<double> best(files.size(), 1e30);
+                                const std::vector<int> &threads, int rounds) {
+  std::vector<double> best(1 + (files.size() - 1) * threads.size(), 1e30);
   for (int round = 0; round < rounds; ++round) {
-    for (size_t i = 0; i < files.size(); ++i) {
-      const double ms = DecodeMs(files[i]);
-      if (ms < 0) {
-        return {};
+    for (size_t i = 0, k = 0; i < files.size(); ++i) {
+      for (size_t t = 0; t < (i == 0 ? 1 : threads.size()); ++t, ++k) {
+        draco::SetUvMaxThreads(threads[t]);
+        const double ms = DecodeMs(files[i]);
+        if (ms < 0) {
+          return {};
+        }
+        best[k] = std::min(best[k], ms);
       }
-      best[i] = std::min(best[i], ms);
     }
   }
+  draco::SetUvMaxThreads(threads[0]);
   return best;
+}
+
+// "auto" for the first thread cap, "auto 1 thread" and so on for others.
+std::vector<std::string> ColumnNames(const Args &args) {
+  std::vector<std::string> names;
+  for (const std::string &scheme : args.schemes) {
+    for (size_t t = 0; t < args.threads.size(); ++t) {
+      names.push_back(
+          t == 0 ? scheme
+                 : scheme + " " + std::to_string(args.threads[t]) +
+                       (args.threads[t] == 1 ? " thread" : " threads"));
+    }
+  }
+  return names;
 }
 
 void PrintSummary(const std::vector<std::string> &schemes,
@@ -152,13 +186,15 @@ int main(int argc, char **argv) {
     Usage();
     return draco::UvToolUsageExitCode(argc, argv);
   }
+  draco::SetUvMaxThreads(args.threads[0]);
+  const std::vector<std::string> columns = ColumnNames(args);
   std::string header = "| mesh | stock ms |", rule = "| --- | ---: |";
-  for (const std::string &scheme : args.schemes) {
-    header += " " + scheme + " ms | ratio |";
+  for (const std::string &column : columns) {
+    header += " " + column + " ms | ratio |";
     rule += " ---: | ---: |";
   }
   printf("%s\n%s\n", header.c_str(), rule.c_str());
-  std::vector<std::vector<double>> ratios(args.schemes.size());
+  std::vector<std::vector<double>> ratios(columns.size());
   int failures = 0;
   for (const std::string &path : draco::ListMeshFiles(args.input)) {
     auto mesh = draco::ReadMeshFromFile(path);
@@ -168,20 +204,21 @@ int main(int argc, char **argv) {
       ++failures;
       continue;
     }
-    const std::vector<double> ms = MinDecodeMs(files, args.rounds);
+    const std::vector<double> ms =
+        MinDecodeMs(files, args.threads, args.rounds);
     if (ms.empty()) {
       fprintf(stderr, "Error: cannot decode %s\n", path.c_str());
       ++failures;
       continue;
     }
     printf("| %s | %.3f |", path.substr(path.rfind('/') + 1).c_str(), ms[0]);
-    for (size_t s = 0; s < args.schemes.size(); ++s) {
-      ratios[s].push_back(ms[s + 1] / ms[0]);
-      printf(" %.3f | %.3f |", ms[s + 1], ratios[s].back());
+    for (size_t c = 0; c < columns.size(); ++c) {
+      ratios[c].push_back(ms[c + 1] / ms[0]);
+      printf(" %.3f | %.3f |", ms[c + 1], ratios[c].back());
     }
     printf("\n");
     fflush(stdout);
   }
-  PrintSummary(args.schemes, ratios);
+  PrintSummary(columns, ratios);
   return failures == 0 ? 0 : 1;
 }

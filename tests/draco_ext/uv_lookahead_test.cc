@@ -54,15 +54,16 @@ TEST(UvLookaheadTest, NeverWaitsForAStalledThread) {
   std::atomic<bool> thread_started{false};
   const int n = 20 * UvLookahead<uint64_t>::kChunk;
   {
-    UvLookahead<uint64_t> items(n, true, [&](int begin, int end, uint64_t *out) {
-      if (std::this_thread::get_id() != consumer) {
-        thread_started = true;
-        while (!consumed) {
-          std::this_thread::yield();
-        }
-      }
-      ComputeItems(begin, end, out);
-    });
+    UvLookahead<uint64_t> items(n, true,
+                                [&](int begin, int end, uint64_t *out) {
+                                  if (std::this_thread::get_id() != consumer) {
+                                    thread_started = true;
+                                    while (!consumed) {
+                                      std::this_thread::yield();
+                                    }
+                                  }
+                                  ComputeItems(begin, end, out);
+                                });
     // Let the thread claim a chunk (if it runs at all) before consuming.
     for (int spins = 0; spins < 1000000 && !thread_started; ++spins) {
       std::this_thread::yield();
@@ -72,6 +73,13 @@ TEST(UvLookaheadTest, NeverWaitsForAStalledThread) {
     }
     consumed = true;
   }
+}
+
+TEST(UvLookaheadTest, MaxThreadsOfOneAllowsNoSecondThread) {
+  const int saved = UvMaxThreads();
+  SetUvMaxThreads(1);
+  EXPECT_FALSE(UvSecondThreadAvailable());
+  SetUvMaxThreads(saved);
 }
 
 }  // namespace

@@ -243,11 +243,11 @@ TEST(MeshPredictionSchemeTexCoordsWeightedTest, DecoderInvertsEncoderOnRandomUvs
   }
 }
 
-// The reach kinds compute stencils and frames ahead on a second thread for
-// large meshes; the residuals must not depend on it. Smooth texture
-// coordinates exercise the stencils, noisy ones the fallbacks.
+// Large meshes have their stencils' frames computed ahead on a second
+// thread; the residuals must not depend on it. Smooth texture coordinates
+// exercise the stencils, noisy ones the fallbacks.
 TEST(MeshPredictionSchemeTexCoordsWeightedTest,
-     ReachPredictionIsTheSameOnOneAndTwoThreads) {
+     PredictionIsTheSameOnOneAndTwoThreads) {
   std::mt19937 rng(29);
   std::uniform_int_distribution<int32_t> noise(-3, 3);
   for (const int noise_scale : {0, 1, 1000}) {
@@ -260,8 +260,9 @@ TEST(MeshPredictionSchemeTexCoordsWeightedTest,
         });
     WeightedPredictionHarness harness(*mesh);
     for (const UvPredictorKind kind :
-         {UvPredictorKind::kReachAdaptive, UvPredictorKind::kReachMean}) {
-      const UvPredictionConfig config{false, kind, true};
+         {UvPredictorKind::kAdaptive, UvPredictorKind::kAgreementWeighted,
+          UvPredictorKind::kReachAdaptive, UvPredictorKind::kReachMean}) {
+      const UvPredictionConfig config{!UsesReachStencil(kind), kind, true};
       const std::vector<int32_t> one_thread = harness.Residuals(config, 1);
       EXPECT_GT(CountNonZero(one_thread), 0);
       EXPECT_EQ(harness.Residuals(config, 2), one_thread)
