@@ -16,7 +16,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <condition_variable>
 #include <cstdint>
+#include <mutex>
 #include <numeric>
 #include <thread>
 #include <utility>
@@ -446,6 +448,7 @@ bool UvSparseCholesky::Analyze(const UvMatrixGraph &graph,
               static_cast<int>(i));
   }
   side_ = SideSubtree();
+  ChooseFactorSubtrees();
   if (side_ >= 0) {
     side_begin_ = side_ - subtree_size_[side_] + 1;
     join_ =
@@ -532,22 +535,51 @@ bool UvSparseCholesky::Factorize(const UvSymmetricMatrix &matrix) {
   }
   std::vector<std::vector<double>> updates(nodes_.size());
   const int num_nodes = static_cast<int>(nodes_.size());
-  if (side_ < 0) {
-    return FactorizeNodes(matrix, 0, num_nodes, -1, -1, &updates);
-  }
-  // The side subtree and the other nodes before the join are independent.
-  bool side_ok = false, other_ok = false;
+  // The side subtrees on a second thread, the other nodes on this one in
+  // order; a node waits for the side subtrees it assembles. Every front's
+  // arithmetic and its children's order are the same on one thread.
+  std::mutex mutex;
+  std::condition_variable subtree_done;
+  size_t num_done = 0;
+  bool side_ok = true, other_ok = true;
   RunBoth(
       [&] {
-        side_ok =
-            FactorizeNodes(matrix, side_begin_, side_ + 1, -1, -1, &updates);
+        std::vector<int> front_index(num_unknowns(), -1), columns;
+        for (const int root : side_roots_) {
+          bool ok = true;
+          for (int n = root - subtree_size_[root] + 1; n <= root && ok; ++n) {
+            ok = FactorizeNode(matrix, n, &front_index, &columns, &updates);
+          }
+          std::lock_guard<std::mutex> lock(mutex);
+          // A failure releases every wait.
+          num_done = ok ? num_done + 1 : side_roots_.size();
+          side_ok = ok;
+          subtree_done.notify_one();
+          if (!ok) {
+            return;
+          }
+        }
       },
       [&] {
-        other_ok =
-            FactorizeNodes(matrix, 0, join_, side_begin_, side_ + 1, &updates);
+        std::vector<int> front_index(num_unknowns(), -1), columns;
+        for (int n = 0; n < num_nodes && other_ok; ++n) {
+          if (in_side_[n]) {
+            continue;
+          }
+          for (const int child : nodes_[n].children) {
+            if (side_rank_[child] >= 0) {
+              std::unique_lock<std::mutex> lock(mutex);
+              const size_t rank = side_rank_[child];
+              subtree_done.wait(lock, [&] { return num_done > rank; });
+              other_ok = side_ok;
+            }
+          }
+          other_ok =
+              other_ok &&
+              FactorizeNode(matrix, n, &front_index, &columns, &updates);
+        }
       });
-  return side_ok && other_ok &&
-         FactorizeNodes(matrix, join_, num_nodes, -1, -1, &updates);
+  return side_ok && other_ok;
 }
 
 bool UvSparseCholesky::MayUseSecondThread() const {
@@ -569,6 +601,47 @@ void UvSparseCholesky::RunBoth(const Side &side, const Other &other) const {
   std::thread worker(side);
   other();
   worker.join();
+}
+
+void UvSparseCholesky::ChooseFactorSubtrees() {
+  const int num_nodes = static_cast<int>(nodes_.size());
+  side_roots_.clear();
+  side_rank_.assign(num_nodes, -1);
+  in_side_.assign(num_nodes, 0);
+  std::vector<double> subtree(num_nodes);
+  double total = 0;
+  for (int i = 0; i < num_nodes; ++i) {
+    subtree[i] = NodeFlops(nodes_[i]);
+    total += subtree[i];
+    for (const int child : nodes_[i].children) {
+      subtree[i] += subtree[child];
+    }
+  }
+  if (total < kMinThreadFlops) {
+    return;
+  }
+  // Parents come before their children in reverse order.
+  double remaining = total / 2;
+  for (int i = num_nodes - 1; i >= 0; --i) {
+    if (parent_[i] >= 0 && in_side_[parent_[i]]) {
+      in_side_[i] = 1;
+    } else if (subtree[i] <= remaining) {
+      in_side_[i] = 1;
+      side_roots_.push_back(i);
+      remaining -= subtree[i];
+    }
+  }
+  // In the order their parents need them.
+  auto parent_order = [&](int root) {
+    return parent_[root] < 0 ? num_nodes : parent_[root];
+  };
+  std::sort(side_roots_.begin(), side_roots_.end(), [&](int a, int b) {
+    return std::make_pair(parent_order(a), a) <
+           std::make_pair(parent_order(b), b);
+  });
+  for (size_t i = 0; i < side_roots_.size(); ++i) {
+    side_rank_[side_roots_[i]] = static_cast<int>(i);
+  }
 }
 
 int UvSparseCholesky::SideSubtree() const {
@@ -598,22 +671,6 @@ int UvSparseCholesky::SideSubtree() const {
     }
   }
   return best;
-}
-
-bool UvSparseCholesky::FactorizeNodes(
-    const UvSymmetricMatrix &matrix, int begin, int end, int skip_begin,
-    int skip_end, std::vector<std::vector<double>> *updates) {
-  std::vector<int> front_index(num_unknowns(), -1);
-  std::vector<int> columns;
-  for (int n = begin; n < end; ++n) {
-    if (n >= skip_begin && n < skip_end) {
-      continue;
-    }
-    if (!FactorizeNode(matrix, n, &front_index, &columns, updates)) {
-      return false;
-    }
-  }
-  return true;
 }
 
 bool UvSparseCholesky::FactorizeNode(

@@ -135,10 +135,13 @@ class UvSparseCholesky {
 
   // False when a child updates a column of a sibling subtree.
   bool ComputeUpdateRows(const UvMatrixGraph &graph);
-  // The subtree to factorise and solve on a second thread (its root node),
-  // or -1 for one thread: the one that splits the work below its ancestors
-  // most evenly.
+  // The subtree to solve on a second thread (its root node), or -1 for one
+  // thread: the one that splits the work below its ancestors most evenly.
   int SideSubtree() const;
+  // Chooses side_roots_ for Factorize(): from the roots down, every subtree
+  // that still fits into half the work, so that several subtrees (charts,
+  // branches at different depths) balance the two threads.
+  void ChooseFactorSubtrees();
   // True when a second thread may be used: allowed by set_max_threads(),
   // more than one core, and not a WebAssembly build without threads.
   bool MayUseSecondThread() const;
@@ -152,12 +155,9 @@ class UvSparseCholesky {
                    Eigen::MatrixXd *gathered) const;
   void BackwardNode(const Node &node, Eigen::MatrixXd *y,
                     Eigen::MatrixXd *gathered) const;
-  // Factorises nodes begin .. end - 1 except skip_begin .. skip_end - 1, in
-  // order, with their own workspace. |updates| holds every node's update
-  // matrix until its parent has assembled it.
-  bool FactorizeNodes(const UvSymmetricMatrix &matrix, int begin, int end,
-                      int skip_begin, int skip_end,
-                      std::vector<std::vector<double>> *updates);
+  // Factorises node |n| with the workspace |front_index| (-1 or stale
+  // entries, one per unknown) and |columns|. |updates| holds every node's
+  // update matrix until its parent has assembled it.
   bool FactorizeNode(const UvSymmetricMatrix &matrix, int n,
                      std::vector<int> *front_index,
                      std::vector<int> *columns,
@@ -183,6 +183,13 @@ class UvSparseCholesky {
   int side_ = -1;
   int side_begin_ = 0;
   int join_ = 0;
+  // Factorize()'s second thread: the disjoint subtrees rooted at
+  // side_roots_, in the order the other nodes assemble them.
+  // side_rank_[node] is a root's position in side_roots_, else -1;
+  // in_side_[node] whether a node belongs to one of these subtrees.
+  std::vector<int> side_roots_;
+  std::vector<int> side_rank_;
+  std::vector<char> in_side_;
 };
 
 }  // namespace draco
