@@ -159,8 +159,11 @@ bool UvLaplacianSystem::Init(const UvLaplacianOperator &op,
     is_anchor[a] = true;
   }
   const Transposed t = Transpose(op);
-  const UvSymmetricMatrix m = NormalMatrix(op, t, is_anchor);
-  return cholesky_.Analyze(OperatorGraph(op, t), max_factor_entries) &&
+  // The normal matrix is built while its order is computed.
+  UvSymmetricMatrix m;
+  return cholesky_.Analyze(
+             OperatorGraph(op, t), max_factor_entries,
+             [&] { m = NormalMatrix(op, t, is_anchor); }) &&
          cholesky_.factor_flops() <= MaxFactorFlops(op.num_rows()) &&
          cholesky_.Factorize(m);
 }

@@ -411,6 +411,14 @@ class UvSparseCholesky::Dissection {
 };
 
 bool UvSparseCholesky::Analyze(const UvMatrixGraph &graph,
+                               int64_t max_entries,
+                               const std::function<void()> &work) {
+  bool ok = false;
+  RunBoth(work, [&] { ok = Analyze(graph, max_entries); });
+  return ok;
+}
+
+bool UvSparseCholesky::Analyze(const UvMatrixGraph &graph,
                                int64_t max_entries) {
   const int n = graph.size();
   nodes_.clear();

@@ -45,6 +45,7 @@
 #define DRACO_EXT_UV_SPARSE_CHOLESKY_H_
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -78,6 +79,10 @@ class UvSparseCholesky {
   // the factor, when it would have more than |max_entries| entries. Large
   // graphs are dissected on two threads, to the same order as on one.
   bool Analyze(const UvMatrixGraph &graph, int64_t max_entries);
+  // Analyze(), running |work| meanwhile on a second thread when allowed
+  // (else first), e.g. to build the matrix during the ordering.
+  bool Analyze(const UvMatrixGraph &graph, int64_t max_entries,
+               const std::function<void()> &work);
 
   // Factorises |matrix| (pattern as analysed). False when the matrix is not
   // numerically positive definite or has non-finite entries. Large
