@@ -161,9 +161,8 @@ bool UvLaplacianSystem::Init(const UvLaplacianOperator &op,
   const Transposed t = Transpose(op);
   // The normal matrix is built while its order is computed.
   UvSymmetricMatrix m;
-  return cholesky_.Analyze(
-             OperatorGraph(op, t), max_factor_entries,
-             [&] { m = NormalMatrix(op, t, is_anchor); }) &&
+  return cholesky_.Analyze(OperatorGraph(op, t), max_factor_entries,
+                           [&] { m = NormalMatrix(op, t, is_anchor); }) &&
          cholesky_.factor_flops() <= MaxFactorFlops(op.num_rows()) &&
          cholesky_.Factorize(m);
 }

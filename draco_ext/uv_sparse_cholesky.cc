@@ -254,10 +254,10 @@ class UvSparseCholesky::Dissection {
   // distances from the root a and from the farthest point b of the level
   // structure, f = d_a - d_b changes by at most 4 between coupled points
   // (two edges apart), so the points with f in c .. c + 3 separate f < c
-  // from f > c + 3. Unlike a
-  // level (a circle around a), the level sets of f run straight across
-  // the middle, which measured 5-60% fewer factor flops. Replaces |sides|
-  // when the smallest balanced such cut is smaller than |current_size|.
+  // from f > c + 3. Unlike a level (a circle around a), the level sets of
+  // f run straight across the middle, which measured 5-60% fewer factor
+  // flops. Replaces |sides| when the smallest balanced such cut is smaller
+  // than |current_size|.
   void DistanceCut(const std::vector<int> &reached,
                    const std::vector<int> &levels,
                    const std::vector<int> &far_reached,
@@ -280,8 +280,8 @@ class UvSparseCholesky::Dissection {
     }
     int best = -1, best_size = 0, before = 0;
     for (size_t c = 0; c + 3 < histogram.size(); ++c) {
-      const int size = histogram[c] + histogram[c + 1] + histogram[c + 2] +
-                       histogram[c + 3];
+      const int size =
+          histogram[c] + histogram[c + 1] + histogram[c + 2] + histogram[c + 3];
       if (Balanced(before, total - before - size) &&
           (best < 0 || size < best_size)) {
         best = static_cast<int>(c);
@@ -393,8 +393,8 @@ class UvSparseCholesky::Dissection {
       frontier_.swap(next_frontier_);
     }
     // No trailing levels of outside points only.
-    while (levels->size() > 1 && (*levels)[levels->size() - 2] ==
-                                     (*levels)[levels->size() - 1]) {
+    while (levels->size() > 1 &&
+           (*levels)[levels->size() - 2] == (*levels)[levels->size() - 1]) {
       levels->pop_back();
     }
   }
@@ -415,8 +415,7 @@ class UvSparseCholesky::Dissection {
   int next_stamp_ = 0;
 };
 
-bool UvSparseCholesky::Analyze(const UvMatrixGraph &graph,
-                               int64_t max_entries,
+bool UvSparseCholesky::Analyze(const UvMatrixGraph &graph, int64_t max_entries,
                                const std::function<void()> &work) {
   bool ok = false;
   RunBoth(work, [&] { ok = Analyze(graph, max_entries); });
@@ -587,9 +586,8 @@ bool UvSparseCholesky::Factorize(const UvSymmetricMatrix &matrix) {
               other_ok = side_ok;
             }
           }
-          other_ok =
-              other_ok &&
-              FactorizeNode(matrix, n, &front_index, &columns, &updates);
+          other_ok = other_ok &&
+                     FactorizeNode(matrix, n, &front_index, &columns, &updates);
         }
       });
   return side_ok && other_ok;
@@ -733,8 +731,7 @@ bool UvSparseCholesky::FactorizeNode(
     for (int a = 0; a < size; ++a) {
       // Rows at or below the column's diagonal, in the panel or the update.
       const int column = front_index[rows[a]];
-      double *target = column < k ? &panel(0, column)
-                                  : &update(0, column - k);
+      double *target = column < k ? &panel(0, column) : &update(0, column - k);
       const int row_offset = column < k ? 0 : k;
       for (int b = a; b < size; ++b) {
         target[front_index[rows[b]] - row_offset] += child_update(b, a);

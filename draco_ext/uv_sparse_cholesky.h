@@ -164,8 +164,7 @@ class UvSparseCholesky {
   // entries, one per unknown) and |columns|. |updates| holds every node's
   // update matrix until its parent has assembled it.
   bool FactorizeNode(const UvSymmetricMatrix &matrix, int n,
-                     std::vector<int> *front_index,
-                     std::vector<int> *columns,
+                     std::vector<int> *front_index, std::vector<int> *columns,
                      std::vector<std::vector<double>> *updates);
   // The front's global column numbers, own columns first.
   void FrontColumns(const Node &node, std::vector<int> *columns) const;
