@@ -94,15 +94,27 @@ UvSymmetricMatrix NormalMatrix(const UvLaplacianOperator &op,
   return m;
 }
 
-// The graph of |m|'s pattern (without the diagonal).
-UvMatrixGraph MatrixGraph(const UvSymmetricMatrix &m) {
+// The graph of L's pattern, symmetrised, without the diagonal: the
+// texture one-ring graph, whose square holds the pattern of L^T L.
+UvMatrixGraph OperatorGraph(const UvLaplacianOperator &op,
+                            const Transposed &t) {
+  const int n = op.num_rows();
   UvMatrixGraph graph;
   graph.start.assign(1, 0);
-  for (int u = 0; u < m.size; ++u) {
-    for (int e = m.column_start[u]; e < m.column_start[u + 1]; ++e) {
-      if (m.row[e] != u) {
-        graph.neighbour.push_back(m.row[e]);
-      }
+  graph.neighbour.reserve(op.row_start(n));
+  std::vector<int> marker(n, -1);
+  auto add = [&](int u, int v) {
+    if (v != u && marker[v] != u) {
+      marker[v] = u;
+      graph.neighbour.push_back(v);
+    }
+  };
+  for (int u = 0; u < n; ++u) {
+    for (int e = op.row_start(u); e < op.row_start(u + 1); ++e) {
+      add(u, op.column(e));
+    }
+    for (int e = t.start[u]; e < t.start[u + 1]; ++e) {
+      add(u, t.row[e]);
     }
     graph.start.push_back(static_cast<int>(graph.neighbour.size()));
   }
@@ -146,8 +158,11 @@ bool UvLaplacianSystem::Init(const UvLaplacianOperator &op,
   for (const int a : anchors) {
     is_anchor[a] = true;
   }
-  const UvSymmetricMatrix m = NormalMatrix(op, Transpose(op), is_anchor);
-  return cholesky_.Analyze(MatrixGraph(m), max_factor_entries) &&
+  const Transposed t = Transpose(op);
+  // The normal matrix is built while its order is computed.
+  UvSymmetricMatrix m;
+  return cholesky_.Analyze(OperatorGraph(op, t), max_factor_entries,
+                           [&] { m = NormalMatrix(op, t, is_anchor); }) &&
          cholesky_.factor_flops() <= MaxFactorFlops(op.num_rows()) &&
          cholesky_.Factorize(m);
 }

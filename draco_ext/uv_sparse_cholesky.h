@@ -23,17 +23,21 @@
 //   [Gill et al. 1974] P. E. Gill, G. H. Golub, W. Murray, M. A. Saunders:
 //     Methods for modifying matrix factorizations. Math. Comp. 28(126).
 //
-// The fill-reducing order is a nested dissection of the matrix graph
-// [George & Liu 1978]: connected components are dissected separately, and a
-// connected subset is cut at the smaller of two balanced separators, the
-// smallest level near the median of a breadth-first level structure from a
-// pseudo-peripheral vertex a, or a level set of d_a - d_b across the
-// subset (b the farthest vertex from a), and the separator is thinned. The
-// dissection tree is the assembly tree of a multifrontal factorisation:
-// every tree node is one dense front, factorised with Eigen's blocked dense
-// kernels. Eigen's own sparse Cholesky (simplicial, AMD order) measured
-// 3-4 times slower on the 300k-vertex benchmark mesh, mostly in the ordering
-// and in its column-by-column numeric phase.
+// The fill-reducing order is a nested dissection [George & Liu 1978] of
+// the matrix's square root graph (the mesh one-ring graph, where the normal
+// matrix couples the unknowns at most two edges apart): coupled components
+// are dissected separately, and a coupled subset is cut at the smaller of
+// two balanced separators two edges wide, the smallest pair of levels near
+// the median of a breadth-first level structure from a pseudo-peripheral
+// vertex a, or a band of level sets of d_a - d_b across the subset (b the
+// farthest vertex from a), and the separator is thinned. Searching the
+// one-ring graph visits a third of the edges of the normal matrix's own
+// graph, for the same separators. The dissection tree is the assembly tree
+// of a multifrontal factorisation: every tree node is one dense front,
+// whose columns are factorised in place in the factor's storage with
+// Eigen's blocked dense kernels. Eigen's own sparse Cholesky (simplicial,
+// AMD order) measured 3-4 times slower on the 300k-vertex benchmark mesh,
+// mostly in the ordering and in its column-by-column numeric phase.
 //
 // Deterministic: the same pattern, coordinates and values give the same
 // factor on one build. Not bit-identical across compilers or CPUs.
@@ -41,6 +45,7 @@
 #define DRACO_EXT_UV_SPARSE_CHOLESKY_H_
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -67,11 +72,17 @@ struct UvMatrixGraph {
 class UvSparseCholesky {
  public:
   // Orders the unknowns and computes the structure of the factor for
-  // matrices whose off-diagonal entry (u, v) may be non-zero only when v is
-  // a neighbour of u in |graph| (symmetric). False, before allocating the
-  // factor, when it would have more than |max_entries| entries. Large
+  // matrices whose off-diagonal entry (u, v) may be non-zero only when u and
+  // v are at most two edges apart in |graph| (symmetric): the pattern of
+  // the normal matrix A^T A when |graph| is the pattern of a square A, as
+  // for a mesh Laplacian and its one-ring graph. False, before allocating
+  // the factor, when it would have more than |max_entries| entries. Large
   // graphs are dissected on two threads, to the same order as on one.
   bool Analyze(const UvMatrixGraph &graph, int64_t max_entries);
+  // Analyze(), running |work| meanwhile on a second thread when allowed
+  // (else first), e.g. to build the matrix during the ordering.
+  bool Analyze(const UvMatrixGraph &graph, int64_t max_entries,
+               const std::function<void()> &work);
 
   // Factorises |matrix| (pattern as analysed). False when the matrix is not
   // numerically positive definite or has non-finite entries. Large
@@ -127,11 +138,15 @@ class UvSparseCholesky {
     return k * k * k / 3 + k * k * r + k * r * r;
   }
 
-  void ComputeUpdateRows(const UvMatrixGraph &graph);
-  // The subtree to factorise and solve on a second thread (its root node),
-  // or -1 for one thread: the one that splits the work below its ancestors
-  // most evenly.
+  // False when a child updates a column of a sibling subtree.
+  bool ComputeUpdateRows(const UvMatrixGraph &graph);
+  // The subtree to solve on a second thread (its root node), or -1 for one
+  // thread: the one that splits the work below its ancestors most evenly.
   int SideSubtree() const;
+  // Chooses side_roots_ for Factorize(): from the roots down, every subtree
+  // that still fits into half the work, so that several subtrees (charts,
+  // branches at different depths) balance the two threads.
+  void ChooseFactorSubtrees();
   // True when a second thread may be used: allowed by set_max_threads(),
   // more than one core, and not a WebAssembly build without threads.
   bool MayUseSecondThread() const;
@@ -145,16 +160,11 @@ class UvSparseCholesky {
                    Eigen::MatrixXd *gathered) const;
   void BackwardNode(const Node &node, Eigen::MatrixXd *y,
                     Eigen::MatrixXd *gathered) const;
-  // Factorises nodes begin .. end - 1 except skip_begin .. skip_end - 1, in
-  // order, with their own workspace. |updates| holds every node's update
-  // matrix until its parent has assembled it.
-  bool FactorizeNodes(const UvSymmetricMatrix &matrix, int begin, int end,
-                      int skip_begin, int skip_end,
-                      std::vector<std::vector<double>> *updates);
+  // Factorises node |n| with the workspace |front_index| (-1 or stale
+  // entries, one per unknown) and |columns|. |updates| holds every node's
+  // update matrix until its parent has assembled it.
   bool FactorizeNode(const UvSymmetricMatrix &matrix, int n,
-                     std::vector<int> *front_index,
-                     std::vector<double> *front_storage,
-                     std::vector<int> *columns,
+                     std::vector<int> *front_index, std::vector<int> *columns,
                      std::vector<std::vector<double>> *updates);
   // The front's global column numbers, own columns first.
   void FrontColumns(const Node &node, std::vector<int> *columns) const;
@@ -177,6 +187,13 @@ class UvSparseCholesky {
   int side_ = -1;
   int side_begin_ = 0;
   int join_ = 0;
+  // Factorize()'s second thread: the disjoint subtrees rooted at
+  // side_roots_, in the order the other nodes assemble them.
+  // side_rank_[node] is a root's position in side_roots_, else -1;
+  // in_side_[node] whether a node belongs to one of these subtrees.
+  std::vector<int> side_roots_;
+  std::vector<int> side_rank_;
+  std::vector<char> in_side_;
 };
 
 }  // namespace draco

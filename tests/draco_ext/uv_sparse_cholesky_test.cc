@@ -15,6 +15,9 @@
 #include "draco_ext/uv_sparse_cholesky.h"
 
 #include <cstdint>
+#include <vector>
+
+#include <Eigen/SparseCore>
 
 #include "gtest/gtest.h"
 
@@ -23,7 +26,8 @@ namespace {
 
 // The 9-point graph Laplacian of a side x side grid plus the identity: a
 // positive definite matrix with a two-dimensional pattern, like the normal
-// equations of a mesh.
+// equations of a mesh. Its graph is the 8-neighbour grid graph (the
+// matrix couples only a third of the unknowns two edges apart in it).
 struct GridSystem {
   UvMatrixGraph graph;
   UvSymmetricMatrix matrix;
@@ -86,6 +90,53 @@ Eigen::MatrixXd Multiply(const UvSymmetricMatrix &m, const Eigen::MatrixXd &x) {
     }
   }
   return y;
+}
+
+// A^T A + I for a random A with the 8-neighbour grid pattern: every pair
+// of unknowns two edges apart in the grid graph is coupled, the pattern
+// that Analyze() must separate with two-edge-wide separators, also where
+// two subsets touch only through an ancestor's separator.
+GridSystem MakeGridNormalSystem(int side) {
+  GridSystem s = MakeGridSystem(side);
+  const int n = side * side;
+  Eigen::SparseMatrix<double> a(n, n);
+  std::vector<Eigen::Triplet<double>> entries;
+  for (int u = 0; u < n; ++u) {
+    entries.emplace_back(u, u, 8.0 + (u % 3));
+    for (int e = s.graph.start[u]; e < s.graph.start[u + 1]; ++e) {
+      entries.emplace_back(u, s.graph.neighbour[e],
+                           -1.0 - 0.1 * ((u * 7 + e) % 5));
+    }
+  }
+  a.setFromTriplets(entries.begin(), entries.end());
+  Eigen::SparseMatrix<double> identity(n, n);
+  identity.setIdentity();
+  const Eigen::SparseMatrix<double> normal =
+      Eigen::SparseMatrix<double>(a.transpose() * a) + identity;
+  s.matrix.column_start.assign(1, 0);
+  s.matrix.row.clear();
+  s.matrix.value.clear();
+  for (int u = 0; u < n; ++u) {
+    for (Eigen::SparseMatrix<double>::InnerIterator it(normal, u); it; ++it) {
+      s.matrix.row.push_back(static_cast<int>(it.row()));
+      s.matrix.value.push_back(it.value());
+    }
+    s.matrix.column_start.push_back(static_cast<int>(s.matrix.row.size()));
+  }
+  return s;
+}
+
+TEST(UvSparseCholeskyTest, SolvesNormalEquationsOrderedOnTheSquareRootGraph) {
+  for (const int side : {7, 40, 150}) {
+    const GridSystem s = MakeGridNormalSystem(side);
+    UvSparseCholesky cholesky;
+    ASSERT_TRUE(cholesky.Analyze(s.graph, int64_t{1} << 26)) << side;
+    ASSERT_TRUE(cholesky.Factorize(s.matrix)) << side;
+    const Eigen::MatrixXd x = Eigen::MatrixXd::Random(s.matrix.size, 2);
+    Eigen::MatrixXd b = Multiply(s.matrix, x);
+    cholesky.Solve(b);
+    EXPECT_LT((b - x).cwiseAbs().maxCoeff(), 1e-8) << side;
+  }
 }
 
 TEST(UvSparseCholeskyTest, SolvesALargeGridSystem) {
