@@ -26,6 +26,8 @@
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 
+#include "draco_ext/uv_lookahead.h"
+
 namespace draco {
 
 namespace {
@@ -594,12 +596,7 @@ bool UvSparseCholesky::Factorize(const UvSymmetricMatrix &matrix) {
 }
 
 bool UvSparseCholesky::MayUseSecondThread() const {
-#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
-  // WebAssembly without threads: std::thread would abort.
-  return false;
-#else
-  return max_threads_ > 1 && std::thread::hardware_concurrency() > 1;
-#endif
+  return max_threads_ > 1 && UvSecondThreadAvailable();
 }
 
 template <typename Side, typename Other>

@@ -147,8 +147,8 @@ class UvSparseCholesky {
   // that still fits into half the work, so that several subtrees (charts,
   // branches at different depths) balance the two threads.
   void ChooseFactorSubtrees();
-  // True when a second thread may be used: allowed by set_max_threads(),
-  // more than one core, and not a WebAssembly build without threads.
+  // True when a second thread may be used: allowed by set_max_threads()
+  // and by UvSecondThreadAvailable() (SetUvMaxThreads(), cores, WebAssembly).
   bool MayUseSecondThread() const;
   // Runs |side| on a second thread and |other| on this one, or both here.
   template <typename Side, typename Other>
