@@ -594,8 +594,10 @@ struct ReachStep {
 };
 
 // Smallest number of items (steps or stencils) for which a second thread
-// computes them ahead: starting a thread costs about as much as 400 steps.
-constexpr int kMinItemsForLookaheadThread = 1024;
+// computes them ahead. Starting a thread costs about as much as 400 steps,
+// but on the 2-core test VM attributes below a few thousand entries decoded
+// no faster with it (draco_uv_decode_bench), while those above 10k did.
+constexpr int kMinItemsForLookaheadThread = 8192;
 
 template <typename DataTypeT>
 bool UseLookaheadThread(
