@@ -38,9 +38,11 @@ inline std::atomic<int> &MaxThreads() {
 }
 }  // namespace uv_lookahead_internal
 
-// Process-wide cap on the threads that draco-uv's coders use at once
-// (default 2). With 1 they never start a thread, e.g. for applications
-// that already decode many meshes in parallel. Output never depends on it.
+// Process-wide thread setting of draco-uv's coders (default 2). With 1 they
+// never start a thread, e.g. for applications that already decode many
+// meshes in parallel; above 1 they may run work on other threads (the
+// weighted schemes one, the Laplacian decoder at most two at a time).
+// Output never depends on it.
 inline void SetUvMaxThreads(int max_threads) {
   uv_lookahead_internal::MaxThreads().store(max_threads);
 }
