@@ -177,6 +177,8 @@ class MeshPredictionSchemeTexCoordsWeightedPredictor {
                       const DataTypeT *data, Uv *affine, Uv *similarity);
   void ComputeCandidates(int32_t tip, const DataTypeT *data,
                          const UvComputedFrame *frames);
+  void ComputeCandidatesOfOneStencil(const UvComputedFrame &frame,
+                                     const DataTypeT *data);
   void ComputeFallback(int step, const DataTypeT *data);
   int ChooseCandidate() const;
   void ComputeContext();
@@ -192,8 +194,11 @@ class MeshPredictionSchemeTexCoordsWeightedPredictor {
   std::vector<Pos> positions_;
   // Per entry: |correction| summed over both components (saturated).
   std::vector<uint32_t> magnitude_;
+  // Candidates 0 .. num_candidates_ - 1 exist: the reach kinds have no
+  // agreement weighting (one stencil has nothing to agree with).
+  int num_candidates_ = kNumCandidates;
   // Per candidate: the recent prediction errors, decaying (adaptive kinds).
-  std::array<int64_t, kNumCandidates> recent_error_ = {};
+  std::array<uint64_t, kNumCandidates> recent_error_ = {};
   // Orientation the opposite vertices of the last step that had any gave
   // (+1 before any), and the sum of the current step's.
   int last_orientation_ = 1;
@@ -271,6 +276,7 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::Start(
   num_entries_ = static_cast<int>(order.rank.size());
   CachePositions();
   magnitude_.assign(num_entries_, 0);
+  num_candidates_ = UsesReachStencil(kind) ? kAgreement : kNumCandidates;
   recent_error_.fill(0);
   last_orientation_ = 1;
   step_orientation_sum_ = 0;
@@ -360,6 +366,11 @@ template <typename DataTypeT>
 void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::
     ComputeCandidates(int32_t tip, const DataTypeT *data,
                       const UvComputedFrame *frames) {
+  if (num_stencils_ == 1) {
+    ComputeCandidatesOfOneStencil(
+        frames != nullptr ? frames[0] : ComputeFrame(stencils_[0], tip), data);
+    return;
+  }
   // The adaptive kinds need every candidate (for the errors they learn
   // from); the agreement weight needs several stencils to matter.
   const bool all_candidates = IsAdaptive();
@@ -406,6 +417,29 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::
                              : candidates_[kMeanOfBoth];
 }
 
+// ComputeCandidates() for a single stencil (every vertex of the reach kinds
+// that has one), without the sums: each mean is the stencil's own
+// prediction, the agreement-weighted mean is the mean of both (the weight
+// cancels: round(((a + s) / 2) w / (w 2^16)) = round(((a + s) / 2) / 2^16)),
+// and the parallelogram vL + vR - vB needs no rounding.
+template <typename DataTypeT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<
+    DataTypeT>::ComputeCandidatesOfOneStencil(const UvComputedFrame &frame,
+                                              const DataTypeT *data) {
+  const Stencil &stencil = stencils_[0];
+  Uv affine, similarity;
+  PredictStencil(stencil, frame, data, &affine, &similarity);
+  candidates_[kMeanOfBoth] = UvMeanOfQ16(affine + similarity, 2);
+  candidates_[kAgreement] = candidates_[kMeanOfBoth];
+  candidates_[kAffineMean] = UvMeanOfQ16(affine, 1);
+  candidates_[kSimilarityMean] = UvMeanOfQ16(similarity, 1);
+  candidates_[kParallelogramMean] = stencil.b != UvCornerGraph::kNone
+                                        ? UvOf(data, stencil.l) +
+                                              UvOf(data, stencil.r) -
+                                              UvOf(data, stencil.b)
+                                        : candidates_[kMeanOfBoth];
+}
+
 template <typename DataTypeT>
 void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::ComputeFallback(
     int step, const DataTypeT *data) {
@@ -433,7 +467,7 @@ int MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::ChooseCandidate()
     return kMeanOfBoth;
   }
   int best = kMeanOfBoth;
-  for (int k = 1; k < kNumCandidates; ++k) {
+  for (int k = 1; k < num_candidates_; ++k) {
     if (recent_error_[k] < recent_error_[best]) {
       best = k;
     }
@@ -498,7 +532,7 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::Update(
   if (IsAdaptive()) {
     // Exponentially decaying error sums (weight 15/16 per step): below
     // 16 * 2^21.
-    for (int k = 0; k < kNumCandidates; ++k) {
+    for (int k = 0; k < num_candidates_; ++k) {
       const Uv error = value - candidates_[k];
       recent_error_[k] += std::min(AbsAsUnsigned(error[0]), kMaxError) +
                           std::min(AbsAsUnsigned(error[1]), kMaxError) -

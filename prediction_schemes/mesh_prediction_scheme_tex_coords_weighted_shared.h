@@ -34,7 +34,8 @@ constexpr uint8_t kTexCoordsWeightedFormatVersion = 2;
 // Which stencils a vertex uses and how their predictions become one.
 enum class UvPredictorKind : uint8_t {
   // All stencils; per vertex the candidate combination whose predictions
-  // had the smallest errors at the already decoded neighbours.
+  // had the smallest recent errors (a sum over the vertices decoded so far
+  // that decays by 15/16 per vertex).
   kAdaptive = 0,
   // All stencils; the mean of the weighted parallelogram and the similarity
   // prediction of every stencil, weighted by how much the two agree.
@@ -42,8 +43,8 @@ enum class UvPredictorKind : uint8_t {
   // Only the stencil of the face through which Draco's traversal reaches
   // the vertex, as Draco's own texture coordinate predictors do: about half
   // the arithmetic of the others, for stock decoding speed. Needs Draco's
-  // entry order. Per vertex, the candidate with the smallest errors at the
-  // reach face's known vertices.
+  // entry order. Per vertex, the candidate with the smallest recent errors,
+  // as kAdaptive.
   kReachAdaptive = 2,
   // The reach stencil; the mean of its weighted parallelogram and its
   // similarity prediction.
