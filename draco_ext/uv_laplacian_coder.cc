@@ -68,6 +68,20 @@ class LaplacianSetup {
   int end(int v) const { return op_.row_start(v + 1); }
   int neighbour(int i) const { return op_.column(i); }
 
+  // Context of the value of anchor |i| of |anchors| (the chart anchors,
+  // then the extra ones): a chart's first anchor jumps from the previous
+  // chart, its second one (farthest in 3D) moves across the chart, which on
+  // atlases of many small charts is far shorter, and extra anchors jump
+  // anywhere. Separate tables save 2-9% of the anchors' bits on the corpus
+  // atlases.
+  int AnchorContext(const std::vector<int> &anchors, size_t i) const {
+    if (i >= charts_.anchors.size()) {
+      return 2;
+    }
+    const auto &chart_of = charts_.chart_of_vertex;
+    return i > 0 && chart_of[anchors[i]] == chart_of[anchors[i - 1]] ? 1 : 0;
+  }
+
   // Context of the residual of (v, c) from data the decoder has when it
   // reaches it: the boundary, and the magnitudes of the residuals of the
   // neighbours before |v| (and of u for v's own v residual).
@@ -293,24 +307,26 @@ class LaplacianEncoder {
     });
     EncodeVarint(static_cast<uint32_t>(extra_anchors_.size()), buffer);
     int previous = -1;
+    std::vector<int> anchors = setup_.charts().anchors;
     std::vector<std::array<int32_t, 2>> values(
         anchor_q_.begin(), anchor_q_.begin() + num_chart_anchors);
     for (const size_t i : order) {
       EncodeVarint(static_cast<uint32_t>(extra_anchors_[i] - previous - 1),
                    buffer);
       previous = extra_anchors_[i];
+      anchors.push_back(extra_anchors_[i]);
       values.push_back(anchor_q_[num_chart_anchors + i]);
     }
     UvResidualEncoder coder;
     coder.Reset(static_cast<int>(2 * values.size()));
     std::array<int32_t, 2> last = {0, 0};
-    for (const auto &value : values) {
+    for (size_t i = 0; i < values.size(); ++i) {
       for (int c = 0; c < 2; ++c) {
-        coder.Add(0, value[c] - last[c]);
+        coder.Add(setup_.AnchorContext(anchors, i), values[i][c] - last[c]);
       }
-      last = value;
+      last = values[i];
     }
-    coder.Encode(false, buffer);
+    EncodeSmaller(coder, buffer);
   }
 
   void WriteResiduals(EncoderBuffer *buffer) const {
@@ -323,6 +339,13 @@ class LaplacianEncoder {
         }
       }
     }
+    EncodeSmaller(coder, buffer);
+  }
+
+  // Writes |coder|'s residuals with or without contexts, whichever is
+  // smaller.
+  static void EncodeSmaller(const UvResidualEncoder &coder,
+                            EncoderBuffer *buffer) {
     EncoderBuffer with_contexts, without_contexts;
     coder.Encode(true, &with_contexts);
     coder.Encode(false, &without_contexts);
@@ -362,9 +385,10 @@ bool DecodeHeader(DecoderBuffer *buffer, UvLaplacianKind *kind, double *step,
 
 // Extra anchors (ascending, distinct, no chart anchor) appended to
 // |anchors|, and the values of all anchors.
-bool DecodeAnchors(int num_vertices, DecoderBuffer *buffer,
+bool DecodeAnchors(const LaplacianSetup &setup, DecoderBuffer *buffer,
                    std::vector<int> *anchors,
                    std::vector<std::array<int32_t, 2>> *values) {
+  const int num_vertices = setup.num_vertices();
   std::vector<bool> anchored(num_vertices, false);
   for (const int a : *anchors) {
     anchored[a] = true;
@@ -397,7 +421,7 @@ bool DecodeAnchors(int num_vertices, DecoderBuffer *buffer,
     std::array<int32_t, 2> value;
     for (int c = 0; c < 2; ++c) {
       int32_t delta;
-      if (!coder.Next(0, &delta)) {
+      if (!coder.Next(setup.AnchorContext(*anchors, i), &delta)) {
         return false;
       }
       last[c] += delta;
@@ -487,7 +511,7 @@ bool DecodeUvLaplacian(const UvLaplacianMesh &mesh, DecoderBuffer *buffer,
   std::vector<std::array<int32_t, 2>> anchor_q;
   std::vector<int32_t> q;
   UvLaplacianSystem system;
-  if (!DecodeAnchors(n, buffer, &anchors, &anchor_q) ||
+  if (!DecodeAnchors(setup, buffer, &anchors, &anchor_q) ||
       !DecodeResiduals(setup, buffer, &q) ||
       !system.Init(setup.op(), anchors, UvLaplacianMaxFactorEntries(n))) {
     return false;

@@ -41,7 +41,8 @@
 // Stream (after the caller's header): uint8 operator kind, uint8 step bits,
 // uint8 frame bits; varint K and the K extra anchors as ascending texture
 // vertex deltas (varints); the quantised anchor values as deltas from the
-// previous anchor (UvResidualEncoder, one context); the quantised residuals
+// previous anchor (UvResidualEncoder; contexts: a chart's first anchor, its
+// second one, the extra anchors); the quantised residuals
 // of every non-empty row, u before v per texture vertex (UvResidualEncoder,
 // contexts from the boundary and the already decoded neighbours).
 #ifndef DRACO_EXT_UV_LAPLACIAN_CODER_H_
