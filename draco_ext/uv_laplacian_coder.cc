@@ -52,7 +52,7 @@ class LaplacianSetup {
  public:
   LaplacianSetup(const UvLaplacianMesh &mesh, UvLaplacianKind kind)
       : kind_(kind),
-        charts_(ComputeUvCharts(mesh)),
+        charts_(ComputeUvCharts(mesh, UvMinChartSizeForSecondAnchor(kind))),
         boundary_(UvBoundaryVertices(mesh)) {
     op_.Build(mesh, kind);
   }

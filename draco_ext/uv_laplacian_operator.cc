@@ -227,7 +227,12 @@ std::vector<bool> UvBoundaryVertices(const UvLaplacianMesh &mesh) {
   return boundary;
 }
 
-UvCharts ComputeUvCharts(const UvLaplacianMesh &mesh) {
+int UvMinChartSizeForSecondAnchor(UvLaplacianKind kind) {
+  return kind == UvLaplacianKind::kCotangent ? 2 : 16;
+}
+
+UvCharts ComputeUvCharts(const UvLaplacianMesh &mesh,
+                         int min_size_for_second_anchor) {
   const int n = mesh.num_vertices();
   UnionFind components(n);
   for (const auto &face : mesh.faces) {
@@ -251,8 +256,10 @@ UvCharts ComputeUvCharts(const UvLaplacianMesh &mesh) {
   charts.num_charts = static_cast<int>(first_vertex.size());
   std::vector<int> farthest(first_vertex);
   std::vector<double> distance(charts.num_charts, 0.0);
+  std::vector<int> size(charts.num_charts, 0);
   for (int v = 0; v < n; ++v) {
     const int chart = charts.chart_of_vertex[v];
+    ++size[chart];
     const double d =
         SquaredDistance(mesh.positions[v], mesh.positions[first_vertex[chart]]);
     if (d > distance[chart]) {
@@ -262,7 +269,8 @@ UvCharts ComputeUvCharts(const UvLaplacianMesh &mesh) {
   }
   for (int chart = 0; chart < charts.num_charts; ++chart) {
     charts.anchors.push_back(first_vertex[chart]);
-    if (farthest[chart] != first_vertex[chart]) {
+    if (size[chart] >= min_size_for_second_anchor &&
+        farthest[chart] != first_vertex[chart]) {
       charts.anchors.push_back(farthest[chart]);
     }
   }

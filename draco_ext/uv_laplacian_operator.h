@@ -62,19 +62,32 @@ typedef Eigen::Matrix<double, Eigen::Dynamic, 2> UvValues;
 // a chart vanishes on constants only); a second one, as far from the first
 // as possible, pins the chart's scale and rotation, which otherwise drift
 // with the accumulated quantisation error of the boundary rows (on the
-// corpus atlases 20-40% lower RMSE for about 1.5% more bits).
+// corpus atlases 20-40% lower RMSE for about 1.5% more bits). Small charts
+// drift little when all weights are positive, and on atlases of many small
+// charts the second anchors are a large share of the bits
+// (UvMinChartSizeForSecondAnchor()).
 struct UvCharts {
   std::vector<int> chart_of_vertex;
-  // Per chart its smallest texture vertex and, if the chart has another
-  // one, the vertex farthest from it in 3D.
+  // Per chart its smallest texture vertex and, if the chart has at least
+  // the minimum size given to ComputeUvCharts(), the vertex farthest from it
+  // in 3D.
   std::vector<int> anchors;
   int num_charts = 0;
 };
 
+// Charts of fewer texture vertices than this get one anchor only: 16 for
+// the Tutte and mean-value weights, which are positive (about 4% fewer bits
+// at the same RMSE on the corpus atlases, benchmarks/laplacian.md); every
+// chart of two or more vertices for the cotangent weights, whose negative
+// weights (obtuse triangles) leave a small chart's scale and rotation
+// nearly free.
+int UvMinChartSizeForSecondAnchor(UvLaplacianKind kind);
+
 // Texture vertices on the boundary of the texture connectivity.
 std::vector<bool> UvBoundaryVertices(const UvLaplacianMesh &mesh);
 
-UvCharts ComputeUvCharts(const UvLaplacianMesh &mesh);
+UvCharts ComputeUvCharts(const UvLaplacianMesh &mesh,
+                         int min_size_for_second_anchor);
 
 // The sparse operator L, one row per texture vertex, compressed by row; it
 // applies to the u and the v column alike. Rows of vertices without

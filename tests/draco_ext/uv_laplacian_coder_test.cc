@@ -183,12 +183,38 @@ UvValues RoundTrip(const UvTestCase &c,
   return decoded;
 }
 
+TEST(UvChartsTest, OnlyChartsOfTheMinimumSizeGetASecondAnchor) {
+  std::vector<UvTestCase> cases = TestdataCases();
+  // Beside single triangles, strips of 16 vertices and of 14.
+  cases.push_back(ManyChartsCase(4, 7));
+  cases.push_back(ManyChartsCase(4, 6));
+  for (const UvTestCase &c : cases) {
+    for (const UvLaplacianKind kind : kKinds) {
+      const int min_size = UvMinChartSizeForSecondAnchor(kind);
+      const UvCharts charts = ComputeUvCharts(c.mesh, min_size);
+      std::vector<int> size(charts.num_charts, 0);
+      std::vector<int> num_anchors(charts.num_charts, 0);
+      for (int v = 0; v < c.mesh.num_vertices(); ++v) {
+        ++size[charts.chart_of_vertex[v]];
+      }
+      for (const int a : charts.anchors) {
+        ++num_anchors[charts.chart_of_vertex[a]];
+      }
+      for (int chart = 0; chart < charts.num_charts; ++chart) {
+        EXPECT_EQ(num_anchors[chart], size[chart] >= min_size ? 2 : 1)
+            << c.name << " chart " << chart << " of " << size[chart];
+      }
+    }
+  }
+}
+
 TEST(UvLaplacianSystemTest, SolvesExactlyWithoutQuantization) {
   for (const UvTestCase &c : TestdataCases()) {
     for (const UvLaplacianKind kind : kKinds) {
       UvLaplacianOperator op;
       op.Build(c.mesh, kind);
-      const UvCharts charts = ComputeUvCharts(c.mesh);
+      const UvCharts charts =
+          ComputeUvCharts(c.mesh, UvMinChartSizeForSecondAnchor(kind));
       UvLaplacianSystem system;
       ASSERT_TRUE(system.Init(op, charts.anchors, int64_t{1} << 26)) << c.name;
       UvValues anchor_values(charts.anchors.size(), 2);
@@ -206,7 +232,10 @@ TEST(UvLaplacianSystemTest, RankOneAnchorsMatchAFreshFactorization) {
   const UvTestCase c = TestdataCases().back();
   UvLaplacianOperator op;
   op.Build(c.mesh, UvLaplacianKind::kCotangent);
-  std::vector<int> anchors = ComputeUvCharts(c.mesh).anchors;
+  std::vector<int> anchors =
+      ComputeUvCharts(
+          c.mesh, UvMinChartSizeForSecondAnchor(UvLaplacianKind::kCotangent))
+          .anchors;
   UvLaplacianSystem updated;
   ASSERT_TRUE(updated.Init(op, anchors, int64_t{1} << 26));
   for (int v = 3; v < c.mesh.num_vertices(); v += c.mesh.num_vertices() / 7) {
