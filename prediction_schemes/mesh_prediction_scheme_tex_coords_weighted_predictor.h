@@ -431,6 +431,9 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<
   PredictStencil(stencil, frame, data, &affine, &similarity);
   candidates_[kMeanOfBoth] = UvMeanOfQ16(affine + similarity, 2);
   candidates_[kAgreement] = candidates_[kMeanOfBoth];
+  if (!IsAdaptive()) {
+    return;
+  }
   candidates_[kAffineMean] = UvMeanOfQ16(affine, 1);
   candidates_[kSimilarityMean] = UvMeanOfQ16(similarity, 1);
   candidates_[kParallelogramMean] = stencil.b != UvCornerGraph::kNone
