@@ -72,8 +72,8 @@ class LaplacianSetup {
   // then the extra ones): a chart's first anchor jumps from the previous
   // chart, its second one (farthest in 3D) moves across the chart, which on
   // atlases of many small charts is far shorter, and extra anchors jump
-  // anywhere. Separate tables save 2-9% of the anchors' bits on the corpus
-  // atlases.
+  // anywhere. Separate tables make the corpus atlases' streams 1-3% smaller
+  // (qt 10, 2% anchors; benchmarks/laplacian.md).
   int AnchorContext(const std::vector<int> &anchors, size_t i) const {
     if (i >= charts_.anchors.size()) {
       return 2;
