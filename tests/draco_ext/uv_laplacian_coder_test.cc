@@ -19,15 +19,18 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <map>
 #include <random>
 
+#include "draco_ext/uv_bitstream_guard.h"
 #include "draco_ext/uv_eval.h"
 #include "draco_ext/uv_laplacian_options.h"
 #include "draco_ext/uv_laplacian_system.h"
 #include "draco_ext/uv_prediction_options.h"
 #include "gtest/gtest.h"
+#include "prediction_schemes/mesh_prediction_scheme_tex_coords_laplacian_shared.h"
 #include "tests/draco_uv_test_utils.h"
 
 namespace draco {
@@ -539,6 +542,32 @@ TEST(UvLaplacianSchemeTest, TruncatedFilesFailToDecode) {
     const std::vector<char> truncated(bytes.value().begin(),
                                       bytes.value().begin() + size);
     EXPECT_FALSE(DecodeDracoMesh(truncated).ok()) << size;
+  }
+}
+
+TEST(UvLaplacianSchemeTest, RejectsOtherFormatVersions) {
+  auto mesh = ReadTestMesh(UvTestdataPath("torus_uv.obj"));
+  ASSERT_TRUE(mesh.ok());
+  const auto bytes =
+      EncodeMeshToBytes(*mesh.value(), {14, 10, 10, "laplacian_mv", "", ""});
+  ASSERT_TRUE(bytes.ok());
+  ASSERT_TRUE(DecodeDracoMesh(bytes.value()).ok());
+  // The scheme's data start with the 8-byte guard, then the version.
+  char guard[8];
+  const int32_t words[2] = {kUvGuardFirst, kUvGuardSecond};
+  std::memcpy(guard, words, sizeof(guard));
+  const auto it = std::search(bytes.value().begin(), bytes.value().end(),
+                              guard, guard + sizeof(guard));
+  ASSERT_NE(it, bytes.value().end());
+  const size_t version = (it - bytes.value().begin()) + sizeof(guard);
+  ASSERT_EQ(bytes.value()[version], kTexCoordsLaplacianFormatVersion);
+  for (int value = 0; value < 256; ++value) {
+    if (value == kTexCoordsLaplacianFormatVersion) {
+      continue;
+    }
+    std::vector<char> other = bytes.value();
+    other[version] = static_cast<char>(value);
+    EXPECT_FALSE(DecodeDracoMesh(other).ok()) << value;
   }
 }
 
