@@ -104,6 +104,43 @@ class LaplacianSetup {
   UvLaplacianOperator op_;
 };
 
+// The values the anchors are coded relative to, in the stream's order (the
+// chart anchors, then the extra ones): a chart anchor's is the previous
+// anchor's value; an extra anchor's the previous extra anchor of its chart,
+// else the chart's first anchor. Extra anchors lie inside their chart, closer
+// to its anchors than to the previous extra anchor in vertex order, which may
+// be in another chart (qt 10, 2 % anchors, mean value: 0.3-0.5 % fewer UV
+// bytes on the atlas and conformal meshes; RMSE unchanged).
+class AnchorReferences {
+ public:
+  AnchorReferences(const LaplacianSetup &setup, const std::vector<int> &anchors)
+      : setup_(setup),
+        anchors_(anchors),
+        last_in_chart_(setup.charts().num_charts) {}
+
+  std::array<int64_t, 2> Of(size_t i) const {
+    return i < setup_.charts().anchors.size() ? last_
+                                              : last_in_chart_[Chart(i)];
+  }
+
+  void Record(size_t i, const std::array<int64_t, 2> &value) {
+    last_ = value;
+    if (setup_.AnchorContext(anchors_, i) != 1) {
+      last_in_chart_[Chart(i)] = value;
+    }
+  }
+
+ private:
+  int Chart(size_t i) const {
+    return setup_.charts().chart_of_vertex[anchors_[i]];
+  }
+
+  const LaplacianSetup &setup_;
+  const std::vector<int> &anchors_;
+  std::array<int64_t, 2> last_ = {0, 0};
+  std::vector<std::array<int64_t, 2>> last_in_chart_;
+};
+
 // Quantised residuals (u, v per texture vertex) times the step.
 UvValues Dequantize(const std::vector<int32_t> &q, double step) {
   UvValues r(q.size() / 2, 2);
@@ -319,12 +356,15 @@ class LaplacianEncoder {
     }
     UvResidualEncoder coder;
     coder.Reset(static_cast<int>(2 * values.size()));
-    std::array<int32_t, 2> last = {0, 0};
+    AnchorReferences references(setup_, anchors);
     for (size_t i = 0; i < values.size(); ++i) {
+      const std::array<int64_t, 2> value = {values[i][0], values[i][1]};
+      const std::array<int64_t, 2> reference = references.Of(i);
       for (int c = 0; c < 2; ++c) {
-        coder.Add(setup_.AnchorContext(anchors, i), values[i][c] - last[c]);
+        coder.Add(setup_.AnchorContext(anchors, i),
+                  static_cast<int32_t>(value[c] - reference[c]));
       }
-      last = values[i];
+      references.Record(i, value);
     }
     EncodeSmaller(coder, buffer);
   }
@@ -416,21 +456,22 @@ bool DecodeAnchors(const LaplacianSetup &setup, DecoderBuffer *buffer,
   if (!coder.Decode(static_cast<int>(2 * anchors->size()), buffer)) {
     return false;
   }
-  std::array<int64_t, 2> last = {0, 0};
+  AnchorReferences references(setup, *anchors);
   for (size_t i = 0; i < anchors->size(); ++i) {
-    std::array<int32_t, 2> value;
+    std::array<int64_t, 2> value = references.Of(i);
     for (int c = 0; c < 2; ++c) {
       int32_t delta;
       if (!coder.Next(setup.AnchorContext(*anchors, i), &delta)) {
         return false;
       }
-      last[c] += delta;
-      if (std::abs(last[c]) > kMaxQuantizedMagnitude) {
+      value[c] += delta;
+      if (std::abs(value[c]) > kMaxQuantizedMagnitude) {
         return false;
       }
-      value[c] = static_cast<int32_t>(last[c]);
     }
-    values->push_back(value);
+    references.Record(i, value);
+    values->push_back(
+        {static_cast<int32_t>(value[0]), static_cast<int32_t>(value[1])});
   }
   return true;
 }

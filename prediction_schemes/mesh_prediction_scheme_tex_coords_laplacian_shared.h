@@ -29,7 +29,7 @@
 namespace draco {
 
 // Version of the scheme's prediction data; decoders reject other values.
-constexpr uint8_t kTexCoordsLaplacianFormatVersion = 2;
+constexpr uint8_t kTexCoordsLaplacianFormatVersion = 3;
 
 // Attribute options of the encoder, set by ConfigureUvPrediction() for
 // -uv_pred laplacian_* and -uv_anchors (uv_laplacian_options.h).

@@ -556,8 +556,8 @@ TEST(UvLaplacianSchemeTest, RejectsOtherFormatVersions) {
   char guard[8];
   const int32_t words[2] = {kUvGuardFirst, kUvGuardSecond};
   std::memcpy(guard, words, sizeof(guard));
-  const auto it = std::search(bytes.value().begin(), bytes.value().end(),
-                              guard, guard + sizeof(guard));
+  const auto it = std::search(bytes.value().begin(), bytes.value().end(), guard,
+                              guard + sizeof(guard));
   ASSERT_NE(it, bytes.value().end());
   const size_t version = (it - bytes.value().begin()) + sizeof(guard);
   ASSERT_EQ(bytes.value()[version], kTexCoordsLaplacianFormatVersion);
