@@ -15,6 +15,10 @@
 #                files testdata/golden/*.NAME.drc (and reading the crash
 #                regressions of testdata/fuzz/decode/), so every scheme and
 #                variant gets its own corpus;
+#   decode:laplacian  draco_uv_decode_fuzzer seeded with
+#                testdata/fuzz/laplacian_seeds/ (the lossy Laplacian schemes
+#                have no golden files: their decoded floats may differ
+#                between builds);
 #   roundtrip    draco_uv_roundtrip_fuzzer: encode -> decode of generated
 #                degenerate meshes with every -uv_pred name.
 # Corpora grow in build-fuzz/corpus/TARGET/ from run to run. The table at the
@@ -110,6 +114,8 @@ run_all() {
     run_target "decode:${name}" "${bin}/draco_uv_decode_fuzzer" "${seconds}" \
       "${seeds}" testdata/fuzz/decode || failures=$((failures + 1))
   done
+  run_target decode:laplacian "${bin}/draco_uv_decode_fuzzer" "${seconds}" \
+    testdata/fuzz/laplacian_seeds testdata/fuzz/decode || failures=$((failures + 1))
   run_target roundtrip "${bin}/draco_uv_roundtrip_fuzzer" "${seconds}" \
     testdata/fuzz/roundtrip || failures=$((failures + 1))
   echo "fuzz targets with crashes: ${failures}"

@@ -20,6 +20,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <limits>
 #include <map>
 #include <random>
@@ -593,6 +596,30 @@ TEST(UvLaplacianSchemeTest, CorruptFilesFailOrDecodeFiniteUvs) {
     }
   }
   EXPECT_GT(rejected, 0);
+}
+
+// scripts/fuzz.sh seeds its decode:laplacian target with these files; a
+// format change must renew them (testdata/fuzz/README.md).
+TEST(UvLaplacianSchemeTest, FuzzSeedsDecode) {
+  namespace fs = std::filesystem;
+  const fs::path folder = UvTestdataPath("fuzz/laplacian_seeds");
+  ASSERT_TRUE(fs::is_directory(folder)) << folder;
+  int seeds = 0;
+  for (const auto &entry : fs::directory_iterator(folder)) {
+    std::ifstream stream(entry.path(), std::ios::binary);
+    const std::vector<char> bytes((std::istreambuf_iterator<char>(stream)),
+                                  std::istreambuf_iterator<char>());
+    const auto decoded = DecodeDracoMesh(bytes);
+    ASSERT_TRUE(decoded.ok()) << entry.path();
+    const auto uvs =
+        CornerValues(*decoded.value(), GeometryAttribute::TEX_COORD);
+    EXPECT_FALSE(uvs.empty()) << entry.path();
+    for (const float value : uvs) {
+      ASSERT_TRUE(std::isfinite(value)) << entry.path();
+    }
+    ++seeds;
+  }
+  EXPECT_GE(seeds, 12);
 }
 
 }  // namespace
