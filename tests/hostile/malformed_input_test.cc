@@ -14,11 +14,12 @@
 //
 // The decoder treats its input as hostile: every golden file
 // (testdata/golden/, one per mesh and row of variants.tsv, so new schemes
-// are covered by adding a row) truncated at every byte, with bits flipped,
-// with the draco-uv header fields and the prediction scheme id replaced by
-// unknown values and with huge counts either decodes or fails with a
-// message; it never crashes, hangs or allocates without bound. The
-// sanitizer builds of scripts/fuzz.sh go further on the same seeds.
+// are covered by adding a row; the lossy Laplacian schemes by their fuzz
+// seeds, testdata/fuzz/laplacian_seeds/) truncated at every byte, with bits
+// flipped, with the draco-uv header fields and the prediction scheme id
+// replaced by unknown values and with huge counts either decodes or fails with
+// a message; it never crashes, hangs or allocates without bound. The sanitizer
+// builds of scripts/fuzz.sh go further on the same seeds.
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -50,9 +51,10 @@ struct GoldenFile {
   std::vector<char> data;
 };
 
-std::vector<GoldenFile> GoldenFiles() {
+// The .drc files of testdata/|folder|, sorted by name.
+std::vector<GoldenFile> DrcFilesIn(const std::string &folder) {
   std::vector<GoldenFile> files;
-  for (const auto &entry : fs::directory_iterator(UvTestdataPath("golden"))) {
+  for (const auto &entry : fs::directory_iterator(UvTestdataPath(folder))) {
     if (entry.path().extension() == ".drc") {
       GoldenFile file{entry.path().filename().string(), {}};
       EXPECT_TRUE(ReadFileToBuffer(entry.path().string(), &file.data));
@@ -62,6 +64,18 @@ std::vector<GoldenFile> GoldenFiles() {
   std::sort(
       files.begin(), files.end(),
       [](const GoldenFile &a, const GoldenFile &b) { return a.name < b.name; });
+  return files;
+}
+
+std::vector<GoldenFile> GoldenFiles() { return DrcFilesIn("golden"); }
+
+// The golden files and the Laplacian schemes' fuzz seeds (lossy, so they
+// have no golden files), for the layout-free tests.
+std::vector<GoldenFile> GoldenAndLaplacianFiles() {
+  std::vector<GoldenFile> files = GoldenFiles();
+  for (GoldenFile &file : DrcFilesIn("fuzz/laplacian_seeds")) {
+    files.push_back(std::move(file));
+  }
   return files;
 }
 
@@ -121,7 +135,7 @@ TEST(MalformedInputTest, GoldenFilesDecode) {
 
 TEST(MalformedInputTest, EveryTruncationFailsWithAMessage) {
   int tried = 0;
-  for (const GoldenFile &file : GoldenFiles()) {
+  for (const GoldenFile &file : GoldenAndLaplacianFiles()) {
     for (size_t size = 0; size < file.data.size(); ++size) {
       // A copy of exactly |size| bytes, so that ASan-free builds still
       // read nothing past the end unnoticed by the decoder's checks.
@@ -143,7 +157,7 @@ TEST(MalformedInputTest, BitFlipsDecodeOrFailWithAMessage) {
   constexpr int kRandomFlipsPerFile = 600;
   std::mt19937 rng(5);
   int tried = 0, failed = 0;
-  for (const GoldenFile &file : GoldenFiles()) {
+  for (const GoldenFile &file : GoldenAndLaplacianFiles()) {
     std::vector<size_t> bits;
     const int guard = GuardOffset(file.data);
     if (guard >= 0) {
