@@ -67,6 +67,37 @@ uint64_t Fnv1a64(const void *data, size_t size, uint64_t hash) {
   return hash;
 }
 
+Status CheckMeshIndices(const Mesh &mesh) {
+  for (FaceIndex f(0); f < mesh.num_faces(); ++f) {
+    for (const PointIndex point : mesh.face(f)) {
+      if (point.value() >= mesh.num_points()) {
+        return Status(Status::DRACO_ERROR,
+                      "Face " + std::to_string(f.value()) + " uses point " +
+                          std::to_string(point.value()) + " of " +
+                          std::to_string(mesh.num_points()) + ".");
+      }
+    }
+  }
+  for (int i = 0; i < mesh.num_attributes(); ++i) {
+    const PointAttribute &att = *mesh.attribute(i);
+    const bool mapped = !att.is_mapping_identity();
+    if ((mapped && att.indices_map_size() < mesh.num_points()) ||
+        att.buffer()->data_size() < att.size() * att.byte_stride()) {
+      return Status(Status::DRACO_ERROR,
+                    "Attribute " + std::to_string(i) + " is incomplete.");
+    }
+    for (PointIndex point(0); point < mesh.num_points(); ++point) {
+      if (att.mapped_index(point).value() >= att.size()) {
+        return Status(Status::DRACO_ERROR,
+                      "Point " + std::to_string(point.value()) +
+                          " has no value of attribute " + std::to_string(i) +
+                          ".");
+      }
+    }
+  }
+  return OkStatus();
+}
+
 std::string MeshDigest(const Mesh &mesh) {
   std::string digest = "faces=" + std::to_string(mesh.num_faces()) +
                        " points=" + std::to_string(mesh.num_points());
@@ -95,6 +126,7 @@ StatusOr<std::string> DecodedMeshDigest(const char *data, size_t size,
   }
   DRACO_ASSIGN_OR_RETURN(std::unique_ptr<Mesh> mesh,
                          decoder.DecodeMeshFromBuffer(&buffer));
+  DRACO_RETURN_IF_ERROR(CheckMeshIndices(*mesh));
   return MeshDigest(*mesh);
 }
 

@@ -34,10 +34,19 @@ uint64_t Fnv1a64(const void *data, size_t size,
 // "faces=F points=P" followed, per attribute in id order, by
 // " TYPE:DATATYPExN=HASH", HASH being the FNV-1a of the attribute's values
 // (native bytes) at every face corner in face order. Two meshes with the same
-// digest have the same faces and the same values at every corner.
+// digest have the same faces and the same values at every corner. |mesh|
+// must pass CheckMeshIndices().
 std::string MeshDigest(const Mesh &mesh);
 
-// Decodes the Draco mesh in |data| and returns its MeshDigest(). With
+// Error unless every face corner is one of the mesh's points and every
+// point maps to a value of every attribute. Stock Draco's sequential
+// connectivity decoder (1.5.5 and upstream) accepts face indices beyond the
+// number of points (benchmarks/hostile.md), and reading such a mesh's values
+// would read out of bounds.
+Status CheckMeshIndices(const Mesh &mesh);
+
+// Decodes the Draco mesh in |data|, checks it with CheckMeshIndices() and
+// returns its MeshDigest(). With
 // |quantized|, attribute transforms are skipped, so the digest covers the
 // integers the bitstream codes (quantized positions and texture coordinates,
 // octahedral normals) and no floating point arithmetic of the decoder.
