@@ -89,9 +89,9 @@ class MeshPredictionSchemeTexCoordsLaplacianDecoder
     uint64_t length;
     if (!DecodeUvBitstreamGuard(buffer) || !buffer->Decode(&version) ||
         version != kTexCoordsLaplacianFormatVersion ||
-        !DecodeVarint(&length, buffer) ||
+        !DecodeVarint(&length, buffer) || length == 0 ||
         length > static_cast<uint64_t>(buffer->remaining_size())) {
-      return false;
+      return false;  // A stream holds at least its header.
     }
     stream_.resize(length);
     bitstream_version_ = buffer->bitstream_version();
