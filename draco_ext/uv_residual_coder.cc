@@ -25,7 +25,7 @@ namespace draco {
 
 namespace {
 
-constexpr uint32_t kDirectTokens = 16;
+constexpr uint32_t kDirectTokens = kUvResidualDirectTokens;
 constexpr int kFirstSplitBits = 4;  // bitlen(z) - 1 of the first split token.
 // z < 2^32: n <= 31, so tokens stay below 16 + 2 * 28.
 constexpr uint32_t kNumTokens = kDirectTokens + 2 * (32 - kFirstSplitBits);
@@ -103,26 +103,17 @@ bool UvResidualDecoder::Decode(int count, DecoderBuffer *buffer) {
   return total == count && raw_bits_.StartDecoding(buffer);
 }
 
-bool UvResidualDecoder::Next(int context, int32_t *residual) {
-  const int group = use_contexts_ ? context : 0;
-  if (group < 0 || group >= kUvResidualNumContexts ||
-      next_[group] >= tokens_[group].size()) {
+bool UvResidualDecoder::DecodeSplitToken(uint32_t token, int32_t *residual) {
+  if (token >= kNumTokens) {
     return false;
   }
-  const uint32_t token = tokens_[group][next_[group]++];
-  uint32_t z = token;
-  if (token >= kDirectTokens) {
-    if (token >= kNumTokens) {
-      return false;
-    }
-    const int n = static_cast<int>(token - kDirectTokens) / 2 + kFirstSplitBits;
-    uint32_t low = 0;
-    if (!raw_bits_.DecodeLeastSignificantBits32(n - 1, &low)) {
-      return false;
-    }
-    z = (uint32_t{1} << n) | (((token - kDirectTokens) & 1) << (n - 1)) | low;
+  const int n = static_cast<int>(token - kDirectTokens) / 2 + kFirstSplitBits;
+  uint32_t low = 0;
+  if (!raw_bits_.DecodeLeastSignificantBits32(n - 1, &low)) {
+    return false;
   }
-  *residual = ConvertSymbolToSignedInt(z);
+  *residual = ConvertSymbolToSignedInt(
+      (uint32_t{1} << n) | (((token - kDirectTokens) & 1) << (n - 1)) | low);
   return true;
 }
 
