@@ -74,7 +74,8 @@ class UvResidualDecoder {
   bool Decode(int count, DecoderBuffer *buffer);
   // The next residual of |context|, in the encoder's order. Fails when the
   // context's stream or the raw bits are exhausted or a token is invalid.
-  // Inline: called twice per texture coordinate (1% of a whole decode).
+  // Inline: called twice per texture coordinate; the call alone cost
+  // 0.4-0.6 % of a whole decode.
   bool Next(int context, int32_t *residual) {
     const int group = use_contexts_ ? context : 0;
     if (group < 0 || group >= kUvResidualNumContexts ||
