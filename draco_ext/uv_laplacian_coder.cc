@@ -50,11 +50,13 @@ int32_t Quantize(double value, double step) {
 // vertex neighbourhoods of the operator's rows.
 class LaplacianSetup {
  public:
-  LaplacianSetup(const UvLaplacianMesh &mesh, UvLaplacianKind kind)
-      : kind_(kind),
-        charts_(ComputeUvCharts(mesh, UvMinChartSizeForSecondAnchor(kind))),
-        boundary_(UvBoundaryVertices(mesh)) {
-    op_.Build(mesh, kind);
+  explicit LaplacianSetup(UvLaplacianKind kind) : kind_(kind) {}
+
+  // Computes everything below; |graph| is UvTextureGraph(mesh).
+  void Build(const UvLaplacianMesh &mesh, const UvMatrixGraph &graph) {
+    charts_ = ComputeUvCharts(mesh, UvMinChartSizeForSecondAnchor(kind_));
+    boundary_ = UvBoundaryVertices(mesh, graph);
+    op_.Build(mesh, graph, kind_);
   }
 
   UvLaplacianKind kind() const { return kind_; }
@@ -168,20 +170,28 @@ class LaplacianEncoder {
   LaplacianEncoder(const UvLaplacianMesh &mesh, const UvValues &uv,
                    const UvLaplacianEncoderOptions &options,
                    UvLaplacianKind kind)
-      : uv_(uv),
+      : mesh_(mesh),
+        uv_(uv),
         options_(options),
         step_(StepSize(options.step_bits, options.frame_bits)),
-        setup_(mesh, kind) {}
+        setup_(kind) {}
 
   // Encodes into |buffer|; false when the system is singular.
   bool Run(EncoderBuffer *buffer, UvValues *reconstruction) {
-    QuantizeResiduals();
+    const UvMatrixGraph graph = UvTextureGraph(mesh_);
+    auto build_operator = [&] {
+      setup_.Build(mesh_, graph);
+      QuantizeResiduals();
+      return &setup_.op();
+    };
+    if (!system_.Analyze(graph,
+                         UvLaplacianMaxFactorEntries(mesh_.num_vertices()),
+                         build_operator) ||
+        !system_.Factorize(setup_.charts().anchors)) {
+      return false;
+    }
     for (const int a : setup_.charts().anchors) {
       AppendAnchorValue(a);
-    }
-    if (!system_.Init(setup_.op(), setup_.charts().anchors,
-                      UvLaplacianMaxFactorEntries(setup_.num_vertices()))) {
-      return false;
     }
     residuals_ = Dequantize(q_, step_);
     if (options_.selection == UvAnchorSelection::kGreedy) {
@@ -395,6 +405,7 @@ class LaplacianEncoder {
     buffer->Encode(smaller.data(), smaller.size());
   }
 
+  const UvLaplacianMesh &mesh_;
   const UvValues &uv_;
   const UvLaplacianEncoderOptions &options_;
   const double step_;
@@ -547,14 +558,21 @@ bool DecodeUvLaplacian(const UvLaplacianMesh &mesh, DecoderBuffer *buffer,
   if (!DecodeHeader(buffer, &kind, &step, frame_bits)) {
     return false;
   }
-  const LaplacianSetup setup(mesh, kind);
+  const UvMatrixGraph graph = UvTextureGraph(mesh);
+  LaplacianSetup setup(kind);
+  auto build_operator = [&] {
+    setup.Build(mesh, graph);
+    return &setup.op();
+  };
+  UvLaplacianSystem system;
+  if (!system.Analyze(graph, UvLaplacianMaxFactorEntries(n), build_operator)) {
+    return false;
+  }
   std::vector<int> anchors = setup.charts().anchors;
   std::vector<std::array<int32_t, 2>> anchor_q;
   std::vector<int32_t> q;
-  UvLaplacianSystem system;
   if (!DecodeAnchors(setup, buffer, &anchors, &anchor_q) ||
-      !DecodeResiduals(setup, buffer, &q) ||
-      !system.Init(setup.op(), anchors, UvLaplacianMaxFactorEntries(n))) {
+      !DecodeResiduals(setup, buffer, &q) || !system.Factorize(anchors)) {
     return false;
   }
   *uv = system.Solve(Dequantize(q, step), DequantizeAnchors(anchor_q, step));

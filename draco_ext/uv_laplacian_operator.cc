@@ -32,63 +32,15 @@ bool HasDistinctCorners(const std::array<int, 3> &face) {
   return face[0] != face[1] && face[1] != face[2] && face[2] != face[0];
 }
 
-// Distinct neighbours of every texture vertex, sorted, compressed.
-class Adjacency {
- public:
-  explicit Adjacency(const UvLaplacianMesh &mesh) {
-    const int n = mesh.num_vertices();
-    start_.assign(n + 1, 0);
-    for (const auto &face : mesh.faces) {
-      for (int k = 0; k < 3; ++k) {
-        start_[face[k] + 1] += 2;
-      }
-    }
-    std::partial_sum(start_.begin(), start_.end(), start_.begin());
-    neighbour_.resize(start_[n]);
-    std::vector<int> fill(start_.begin(), start_.end() - 1);
-    for (const auto &face : mesh.faces) {
-      for (int k = 0; k < 3; ++k) {
-        neighbour_[fill[face[k]]++] = face[(k + 1) % 3];
-        neighbour_[fill[face[k]]++] = face[(k + 2) % 3];
-      }
-    }
-    // Sort, drop duplicates and self references, compact.
-    int out = 0;
-    for (int v = 0; v < n; ++v) {
-      const auto begin = neighbour_.begin() + start_[v];
-      const auto end = neighbour_.begin() + start_[v + 1];
-      std::sort(begin, end);
-      const int row_begin = out;
-      for (auto it = begin; it != end; ++it) {
-        if (*it != v && (out == row_begin || neighbour_[out - 1] != *it)) {
-          neighbour_[out++] = *it;
-        }
-      }
-      start_[v] = row_begin;
-    }
-    start_[n] = out;
-    neighbour_.resize(out);
-  }
+// Slot of neighbour |j| of |i| in |graph| (sorted rows); j must be a
+// neighbour.
+int Slot(const UvMatrixGraph &graph, int i, int j) {
+  const auto begin = graph.neighbour.begin();
+  return static_cast<int>(
+      std::lower_bound(begin + graph.start[i], begin + graph.start[i + 1], j) -
+      begin);
+}
 
-  int begin(int v) const { return start_[v]; }
-  int end(int v) const { return start_[v + 1]; }
-  int neighbour(int slot) const { return neighbour_[slot]; }
-  int degree(int v) const { return end(v) - begin(v); }
-  int num_slots() const { return static_cast<int>(neighbour_.size()); }
-  // Slot of neighbour |j| of |i|; j must be a neighbour.
-  int Slot(int i, int j) const {
-    return static_cast<int>(
-        std::lower_bound(neighbour_.begin() + start_[i],
-                         neighbour_.begin() + start_[i + 1], j) -
-        neighbour_.begin());
-  }
-
- private:
-  std::vector<int> start_;
-  std::vector<int> neighbour_;
-};
-
-// Angle quantities at one corner of a 3D triangle.
 struct CornerAngle {
   double cotangent = 0;
   double tan_half = 0;
@@ -160,10 +112,9 @@ struct RowWeights {
 };
 
 RowWeights ComputeRowWeights(const UvLaplacianMesh &mesh,
-                             const Adjacency &adjacency,
-                             UvLaplacianKind kind) {
+                             const UvMatrixGraph &graph, UvLaplacianKind kind) {
   RowWeights rows;
-  rows.weight.assign(adjacency.num_slots(),
+  rows.weight.assign(graph.neighbour.size(),
                      kind == UvLaplacianKind::kTutte ? 1.0 : 0.0);
   rows.degenerate.assign(mesh.num_vertices(), false);
   if (kind == UvLaplacianKind::kTutte) {
@@ -189,13 +140,13 @@ RowWeights ComputeRowWeights(const UvLaplacianMesh &mesh,
       const int j = face[(k + 1) % 3];
       const int l = face[(k + 2) % 3];
       if (kind == UvLaplacianKind::kMeanValue) {
-        rows.weight[adjacency.Slot(i, j)] +=
+        rows.weight[Slot(graph, i, j)] +=
             angles[k].tan_half / angles[k].length_next;
-        rows.weight[adjacency.Slot(i, l)] +=
+        rows.weight[Slot(graph, i, l)] +=
             angles[k].tan_half / angles[k].length_prev;
       } else {
-        rows.weight[adjacency.Slot(j, l)] += angles[k].cotangent;
-        rows.weight[adjacency.Slot(l, j)] += angles[k].cotangent;
+        rows.weight[Slot(graph, j, l)] += angles[k].cotangent;
+        rows.weight[Slot(graph, l, j)] += angles[k].cotangent;
       }
     }
   }
@@ -204,21 +155,60 @@ RowWeights ComputeRowWeights(const UvLaplacianMesh &mesh,
 
 }  // namespace
 
-std::vector<bool> UvBoundaryVertices(const UvLaplacianMesh &mesh) {
-  const Adjacency adjacency(mesh);
-  std::vector<int> uses(adjacency.num_slots(), 0);
+UvMatrixGraph UvTextureGraph(const UvLaplacianMesh &mesh) {
+  const int n = mesh.num_vertices();
+  UvMatrixGraph graph;
+  std::vector<int> &start = graph.start;
+  std::vector<int> &neighbour = graph.neighbour;
+  start.assign(n + 1, 0);
+  for (const auto &face : mesh.faces) {
+    for (int k = 0; k < 3; ++k) {
+      start[face[k] + 1] += 2;
+    }
+  }
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  neighbour.resize(start[n]);
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (const auto &face : mesh.faces) {
+    for (int k = 0; k < 3; ++k) {
+      neighbour[fill[face[k]]++] = face[(k + 1) % 3];
+      neighbour[fill[face[k]]++] = face[(k + 2) % 3];
+    }
+  }
+  // Sort, drop duplicates and self references, compact.
+  int out = 0;
+  for (int v = 0; v < n; ++v) {
+    const auto begin = neighbour.begin() + start[v];
+    const auto end = neighbour.begin() + start[v + 1];
+    std::sort(begin, end);
+    const int row_begin = out;
+    for (auto it = begin; it != end; ++it) {
+      if (*it != v && (out == row_begin || neighbour[out - 1] != *it)) {
+        neighbour[out++] = *it;
+      }
+    }
+    start[v] = row_begin;
+  }
+  start[n] = out;
+  neighbour.resize(out);
+  return graph;
+}
+
+std::vector<bool> UvBoundaryVertices(const UvLaplacianMesh &mesh,
+                                     const UvMatrixGraph &graph) {
+  std::vector<int> uses(graph.neighbour.size(), 0);
   for (const auto &face : mesh.faces) {
     if (!HasDistinctCorners(face)) {
       continue;
     }
     for (int k = 0; k < 3; ++k) {
-      ++uses[adjacency.Slot(face[k], face[(k + 1) % 3])];
-      ++uses[adjacency.Slot(face[(k + 1) % 3], face[k])];
+      ++uses[Slot(graph, face[k], face[(k + 1) % 3])];
+      ++uses[Slot(graph, face[(k + 1) % 3], face[k])];
     }
   }
   std::vector<bool> boundary(mesh.num_vertices(), false);
   for (int v = 0; v < mesh.num_vertices(); ++v) {
-    for (int s = adjacency.begin(v); s < adjacency.end(v); ++s) {
+    for (int s = graph.start[v]; s < graph.start[v + 1]; ++s) {
       if (uses[s] != 2) {
         boundary[v] = true;
       }
@@ -278,15 +268,20 @@ UvCharts ComputeUvCharts(const UvLaplacianMesh &mesh,
 }
 
 void UvLaplacianOperator::Build(const UvLaplacianMesh &mesh,
+                                const UvMatrixGraph &graph,
                                 UvLaplacianKind kind) {
-  const Adjacency adjacency(mesh);
-  const RowWeights rows = ComputeRowWeights(mesh, adjacency, kind);
+  const RowWeights rows = ComputeRowWeights(mesh, graph, kind);
   num_fallback_rows_ = 0;
   row_start_.assign(1, 0);
+  row_start_.reserve(graph.start.size());
   column_.clear();
+  column_.reserve(graph.neighbour.size() + graph.start.size());
   value_.clear();
+  value_.reserve(column_.capacity());
   for (int i = 0; i < mesh.num_vertices(); ++i) {
-    const int degree = adjacency.degree(i);
+    const int begin = graph.start[i];
+    const int end = graph.start[i + 1];
+    const int degree = end - begin;
     if (degree == 0) {
       row_start_.push_back(static_cast<int>(column_.size()));
       continue;
@@ -294,7 +289,7 @@ void UvLaplacianOperator::Build(const UvLaplacianMesh &mesh,
     // Eq. 7 with the diagonal scaled to -1, or Tutte weights when the row's
     // weights are unusable.
     double sum = 0, magnitude = 0;
-    for (int s = adjacency.begin(i); s < adjacency.end(i); ++s) {
+    for (int s = begin; s < end; ++s) {
       sum += rows.weight[s];
       magnitude += std::abs(rows.weight[s]);
     }
@@ -305,8 +300,8 @@ void UvLaplacianOperator::Build(const UvLaplacianMesh &mesh,
     }
     column_.push_back(i);
     value_.push_back(-1.0);
-    for (int s = adjacency.begin(i); s < adjacency.end(i); ++s) {
-      column_.push_back(adjacency.neighbour(s));
+    for (int s = begin; s < end; ++s) {
+      column_.push_back(graph.neighbour[s]);
       value_.push_back(usable ? rows.weight[s] / sum : 1.0 / degree);
     }
     row_start_.push_back(static_cast<int>(column_.size()));

@@ -34,6 +34,8 @@
 
 #include <Eigen/Core>
 
+#include "draco_ext/uv_sparse_cholesky.h"
+
 namespace draco {
 
 enum class UvLaplacianKind : uint8_t {
@@ -83,8 +85,18 @@ struct UvCharts {
 // nearly free.
 int UvMinChartSizeForSecondAnchor(UvLaplacianKind kind);
 
-// Texture vertices on the boundary of the texture connectivity.
-std::vector<bool> UvBoundaryVertices(const UvLaplacianMesh &mesh);
+// The texture one-ring graph: the neighbours of every texture vertex across
+// its faces' edges, sorted, without duplicates or the vertex itself. It is
+// the pattern of every operator of the mesh (UvLaplacianOperator::Build())
+// without the diagonal, and, needing no 3D geometry, the first thing
+// encoder and decoder compute, so that the unknowns can be ordered while
+// the weights are computed (UvLaplacianSystem::Analyze()).
+UvMatrixGraph UvTextureGraph(const UvLaplacianMesh &mesh);
+
+// Texture vertices on the boundary of the texture connectivity; |graph| is
+// UvTextureGraph(mesh).
+std::vector<bool> UvBoundaryVertices(const UvLaplacianMesh &mesh,
+                                     const UvMatrixGraph &graph);
 
 UvCharts ComputeUvCharts(const UvLaplacianMesh &mesh,
                          int min_size_for_second_anchor);
@@ -94,7 +106,10 @@ UvCharts ComputeUvCharts(const UvLaplacianMesh &mesh,
 // neighbours are empty.
 class UvLaplacianOperator {
  public:
-  void Build(const UvLaplacianMesh &mesh, UvLaplacianKind kind);
+  // Row i has the diagonal, then the neighbours of i in |graph|, which must
+  // be UvTextureGraph(mesh).
+  void Build(const UvLaplacianMesh &mesh, const UvMatrixGraph &graph,
+             UvLaplacianKind kind);
 
   int num_rows() const { return static_cast<int>(row_start_.size()) - 1; }
 

@@ -16,6 +16,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
+
+#include "draco/core/macros.h"
 
 namespace draco {
 
@@ -54,10 +57,10 @@ Transposed Transpose(const UvLaplacianOperator &op) {
   return t;
 }
 
-// L^T L + w^2 E E^T, both triangles, by column.
+// L^T L, both triangles, by column; every column starts with its diagonal
+// entry, zero for vertices without faces, so that anchors can be added.
 UvSymmetricMatrix NormalMatrix(const UvLaplacianOperator &op,
-                               const Transposed &t,
-                               const std::vector<bool> &is_anchor) {
+                               const Transposed &t) {
   const int n = op.num_rows();
   UvSymmetricMatrix m;
   m.size = n;
@@ -74,10 +77,7 @@ UvSymmetricMatrix NormalMatrix(const UvLaplacianOperator &op,
   };
   for (int u = 0; u < n; ++u) {
     pattern.clear();
-    if (is_anchor[u]) {
-      touch(u, u);
-      accumulator[u] += kAnchorWeight * kAnchorWeight;
-    }
+    touch(u, u);
     for (int e = t.start[u]; e < t.start[u + 1]; ++e) {
       const int r = t.row[e];
       for (int f = op.row_start(r); f < op.row_start(r + 1); ++f) {
@@ -94,43 +94,23 @@ UvSymmetricMatrix NormalMatrix(const UvLaplacianOperator &op,
   return m;
 }
 
-// The graph of L's pattern, symmetrised, without the diagonal: the
-// texture one-ring graph, whose square holds the pattern of L^T L.
-UvMatrixGraph OperatorGraph(const UvLaplacianOperator &op,
-                            const Transposed &t) {
-  const int n = op.num_rows();
-  UvMatrixGraph graph;
-  graph.start.assign(1, 0);
-  graph.neighbour.reserve(op.row_start(n));
-  std::vector<int> marker(n, -1);
-  auto add = [&](int u, int v) {
-    if (v != u && marker[v] != u) {
-      marker[v] = u;
-      graph.neighbour.push_back(v);
-    }
-  };
-  for (int u = 0; u < n; ++u) {
-    for (int e = op.row_start(u); e < op.row_start(u + 1); ++e) {
-      add(u, op.column(e));
-    }
-    for (int e = t.start[u]; e < t.start[u + 1]; ++e) {
-      add(u, t.row[e]);
-    }
-    graph.start.push_back(static_cast<int>(graph.neighbour.size()));
-  }
-  return graph;
-}
-
 // An upper bound of the entries of L^T L, to refuse pathological
-// connectivity before building it.
-int64_t NormalMatrixBound(const UvLaplacianOperator &op) {
-  const int n = op.num_rows();
+// connectivity before building it; |graph| is the operator's pattern
+// without the diagonal.
+int64_t NormalMatrixBound(const UvMatrixGraph &graph) {
   int64_t bound = 0;
-  for (int r = 0; r < n; ++r) {
-    const int64_t entries = op.row_start(r + 1) - op.row_start(r);
+  for (int u = 0; u < graph.size(); ++u) {
+    const int64_t degree = graph.start[u + 1] - graph.start[u];
+    const int64_t entries = degree > 0 ? degree + 1 : 0;
     bound += entries * entries;
   }
   return bound;
+}
+
+// Adds |delta| to the diagonal entry of column |u| (NormalMatrix()).
+void AddToDiagonalEntry(UvSymmetricMatrix *m, int u, double delta) {
+  DRACO_DCHECK_EQ(m->row[m->column_start[u]], u);
+  m->value[m->column_start[u]] += delta;
 }
 
 // The factorisation's work is capped at kFlopsScale n^1.5 + kMinFlops: 4-9
@@ -146,25 +126,36 @@ double MaxFactorFlops(int num_unknowns) {
 
 }  // namespace
 
-bool UvLaplacianSystem::Init(const UvLaplacianOperator &op,
-                             const std::vector<int> &anchors,
-                             int64_t max_factor_entries) {
-  op_ = &op;
-  anchors_ = anchors;
-  if (NormalMatrixBound(op) > max_factor_entries) {
+bool UvLaplacianSystem::Analyze(
+    const UvMatrixGraph &graph, int64_t max_factor_entries,
+    const std::function<const UvLaplacianOperator *()> &build_operator) {
+  op_ = nullptr;
+  if (NormalMatrixBound(graph) > max_factor_entries) {
     return false;
   }
-  std::vector<bool> is_anchor(op.num_rows(), false);
+  auto build_normal_matrix = [&] {
+    op_ = build_operator();
+    if (op_ != nullptr) {
+      normal_ = NormalMatrix(*op_, Transpose(*op_));
+    }
+  };
+  return cholesky_.Analyze(graph, max_factor_entries, build_normal_matrix) &&
+         op_ != nullptr && op_->num_rows() == graph.size() &&
+         cholesky_.factor_flops() <= MaxFactorFlops(graph.size());
+}
+
+bool UvLaplacianSystem::Factorize(const std::vector<int> &anchors) {
+  DRACO_DCHECK(op_ != nullptr);
+  anchors_ = anchors;
+  UvSymmetricMatrix m = std::move(normal_);
+  std::vector<bool> is_anchor(m.size, false);
   for (const int a : anchors) {
-    is_anchor[a] = true;
+    if (!is_anchor[a]) {
+      is_anchor[a] = true;
+      AddToDiagonalEntry(&m, a, kAnchorWeight * kAnchorWeight);
+    }
   }
-  const Transposed t = Transpose(op);
-  // The normal matrix is built while its order is computed.
-  UvSymmetricMatrix m;
-  return cholesky_.Analyze(OperatorGraph(op, t), max_factor_entries,
-                           [&] { m = NormalMatrix(op, t, is_anchor); }) &&
-         cholesky_.factor_flops() <= MaxFactorFlops(op.num_rows()) &&
-         cholesky_.Factorize(m);
+  return cholesky_.Factorize(m);
 }
 
 void UvLaplacianSystem::AddAnchor(int vertex) {

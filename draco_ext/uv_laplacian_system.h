@@ -30,6 +30,8 @@
 #ifndef DRACO_EXT_UV_LAPLACIAN_SYSTEM_H_
 #define DRACO_EXT_UV_LAPLACIAN_SYSTEM_H_
 
+#include <cstdint>
+#include <functional>
 #include <vector>
 
 #include <Eigen/Core>
@@ -41,21 +43,31 @@ namespace draco {
 
 class UvLaplacianSystem {
  public:
-  // Builds and factorises the normal equations of |op| with anchors at the
-  // texture vertices |anchors|. False when the system is singular (a chart
-  // whose Laplacian has more null space than its anchors remove), its
-  // factor would exceed |max_factor_entries| or its factorisation would
-  // take more than about 1024 n^1.5 flops (n unknowns; see
-  // uv_laplacian_system.cc).
-  bool Init(const UvLaplacianOperator &op, const std::vector<int> &anchors,
-            int64_t max_factor_entries);
+  // Orders the unknowns for |graph|, the texture graph of the operator
+  // (UvTextureGraph()), while |build_operator| runs, on a second thread
+  // when allowed: it returns the operator (kept by the caller until the
+  // last Solve()), or null when it cannot be built; then L^T L is built on
+  // that thread too. The ordering needs no weights, so the two take about
+  // equally long (300k-vertex benchmark mesh) instead of one after the
+  // other. False when building failed, or the factor would exceed
+  // |max_factor_entries| or its factorisation would take more than about
+  // 1024 n^1.5 flops (n unknowns; see uv_laplacian_system.cc).
+  bool Analyze(
+      const UvMatrixGraph &graph, int64_t max_factor_entries,
+      const std::function<const UvLaplacianOperator *()> &build_operator);
+
+  // Factorises the normal equations with anchors at the distinct texture
+  // vertices |anchors|, after a successful Analyze(). False when the system
+  // is singular (a chart whose Laplacian has more null space than its
+  // anchors remove).
+  bool Factorize(const std::vector<int> &anchors);
 
   // Anchors texture vertex |vertex| too, by rank-one updates of the factor.
   void AddAnchor(int vertex);
 
   // The least-squares texture coordinates for residuals |residuals| (one
   // row per row of the operator) and the values |anchor_values| of the
-  // anchors in the order they were given to Init() and AddAnchor().
+  // anchors in the order they were given to Factorize() and AddAnchor().
   UvValues Solve(const UvValues &residuals,
                  const UvValues &anchor_values) const;
 
@@ -63,6 +75,7 @@ class UvLaplacianSystem {
 
  private:
   const UvLaplacianOperator *op_ = nullptr;
+  UvSymmetricMatrix normal_;  // L^T L between Analyze() and Factorize().
   std::vector<int> anchors_;
   UvSparseCholesky cholesky_;
 };

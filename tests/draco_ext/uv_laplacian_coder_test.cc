@@ -214,15 +214,55 @@ TEST(UvChartsTest, OnlyChartsOfTheMinimumSizeGetASecondAnchor) {
   }
 }
 
+TEST(UvLaplacianOperatorTest, TextureGraphIsThePatternWithoutTheDiagonal) {
+  std::vector<UvTestCase> cases = TestdataCases();
+  cases.push_back(ManyChartsCase(4, 7));
+  for (const UvTestCase &c : cases) {
+    const UvMatrixGraph graph = UvTextureGraph(c.mesh);
+    ASSERT_EQ(graph.size(), c.mesh.num_vertices()) << c.name;
+    for (const UvLaplacianKind kind : kKinds) {
+      UvLaplacianOperator op;
+      op.Build(c.mesh, graph, kind);
+      for (int v = 0; v < c.mesh.num_vertices(); ++v) {
+        std::vector<int> expected(graph.neighbour.begin() + graph.start[v],
+                                  graph.neighbour.begin() + graph.start[v + 1]);
+        if (!expected.empty()) {
+          expected.insert(expected.begin(), v);
+        }
+        std::vector<int> row;
+        for (int e = op.row_start(v); e < op.row_start(v + 1); ++e) {
+          row.push_back(op.column(e));
+        }
+        EXPECT_EQ(row, expected) << c.name << " vertex " << v;
+      }
+    }
+  }
+}
+
+// Analyze() and Factorize() of the system of |op| with |anchors|.
+bool SetUpSystem(const UvLaplacianMesh &mesh, const UvLaplacianOperator &op,
+                 const std::vector<int> &anchors, UvLaplacianSystem *system) {
+  return system->Analyze(UvTextureGraph(mesh), int64_t{1} << 26, [&] {
+    return &op;
+  }) && system->Factorize(anchors);
+}
+
+TEST(UvLaplacianSystemTest, FailsWhenTheOperatorCannotBeBuilt) {
+  const UvTestCase c = TestdataCases().back();
+  UvLaplacianSystem system;
+  EXPECT_FALSE(system.Analyze(UvTextureGraph(c.mesh), int64_t{1} << 26,
+                              [] { return nullptr; }));
+}
+
 TEST(UvLaplacianSystemTest, SolvesExactlyWithoutQuantization) {
   for (const UvTestCase &c : TestdataCases()) {
     for (const UvLaplacianKind kind : kKinds) {
       UvLaplacianOperator op;
-      op.Build(c.mesh, kind);
+      op.Build(c.mesh, UvTextureGraph(c.mesh), kind);
       const UvCharts charts =
           ComputeUvCharts(c.mesh, UvMinChartSizeForSecondAnchor(kind));
       UvLaplacianSystem system;
-      ASSERT_TRUE(system.Init(op, charts.anchors, int64_t{1} << 26)) << c.name;
+      ASSERT_TRUE(SetUpSystem(c.mesh, op, charts.anchors, &system)) << c.name;
       UvValues anchor_values(charts.anchors.size(), 2);
       for (size_t i = 0; i < charts.anchors.size(); ++i) {
         anchor_values.row(i) = c.uv.row(charts.anchors[i]);
@@ -237,13 +277,13 @@ TEST(UvLaplacianSystemTest, SolvesExactlyWithoutQuantization) {
 TEST(UvLaplacianSystemTest, RankOneAnchorsMatchAFreshFactorization) {
   const UvTestCase c = TestdataCases().back();
   UvLaplacianOperator op;
-  op.Build(c.mesh, UvLaplacianKind::kCotangent);
+  op.Build(c.mesh, UvTextureGraph(c.mesh), UvLaplacianKind::kCotangent);
   std::vector<int> anchors =
       ComputeUvCharts(
           c.mesh, UvMinChartSizeForSecondAnchor(UvLaplacianKind::kCotangent))
           .anchors;
   UvLaplacianSystem updated;
-  ASSERT_TRUE(updated.Init(op, anchors, int64_t{1} << 26));
+  ASSERT_TRUE(SetUpSystem(c.mesh, op, anchors, &updated));
   for (int v = 3; v < c.mesh.num_vertices(); v += c.mesh.num_vertices() / 7) {
     if (std::find(anchors.begin(), anchors.end(), v) == anchors.end()) {
       updated.AddAnchor(v);
@@ -251,7 +291,7 @@ TEST(UvLaplacianSystemTest, RankOneAnchorsMatchAFreshFactorization) {
     }
   }
   UvLaplacianSystem fresh;
-  ASSERT_TRUE(fresh.Init(op, anchors, int64_t{1} << 26));
+  ASSERT_TRUE(SetUpSystem(c.mesh, op, anchors, &fresh));
   UvValues residuals = op.Apply(c.uv);
   residuals.array() += 100.0;  // Inconsistent: anchors matter.
   UvValues anchor_values(anchors.size(), 2);
