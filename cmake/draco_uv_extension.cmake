@@ -65,7 +65,29 @@ list(
          "${draco_uv_ext}/uv_laplacian_system.cc"
          "${draco_uv_ext}/uv_laplacian_system.h"
          "${draco_uv_ext}/uv_sparse_cholesky.cc"
-         "${draco_uv_ext}/uv_sparse_cholesky.h")
+         "${draco_uv_ext}/uv_sparse_cholesky.h"
+         "${draco_uv_ext}/uv_dense_front.cc"
+         "${draco_uv_ext}/uv_dense_front.h"
+         "${draco_uv_ext}/uv_dense_front_impl.h")
+
+# On x86-64, the Laplacian decoder's dense kernels also in an AVX2 and FMA
+# build, chosen at run time on CPUs that have both (uv_dense_front.h).
+include(CheckCXXCompilerFlag)
+check_cxx_compiler_flag("-mavx2 -mfma" DRACO_UV_COMPILER_HAS_AVX2_FMA)
+# Seen by tests/CMakeLists.txt, outside Draco's directory scope.
+set(DRACO_UV_DENSE_FRONT_AVX2 OFF CACHE INTERNAL "")
+if(CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64|amd64)$"
+   AND CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang"
+   AND DRACO_UV_COMPILER_HAS_AVX2_FMA)
+  list(APPEND draco_compression_decode_sources
+       "${draco_uv_ext}/uv_dense_front_avx2.cc")
+  set_source_files_properties("${draco_uv_ext}/uv_dense_front_avx2.cc"
+                              PROPERTIES COMPILE_OPTIONS "-mavx2;-mfma")
+  set_source_files_properties("${draco_uv_ext}/uv_dense_front.cc"
+                              PROPERTIES COMPILE_DEFINITIONS
+                                         DRACO_UV_DENSE_FRONT_AVX2)
+  set(DRACO_UV_DENSE_FRONT_AVX2 ON CACHE INTERNAL "")
+endif()
 
 list(
   APPEND draco_compression_encode_sources

@@ -565,6 +565,7 @@ bool DecodeUvLaplacian(const UvLaplacianMesh &mesh, DecoderBuffer *buffer,
     return &setup.op();
   };
   UvLaplacianSystem system;
+  system.set_dense_kernels(UvDenseKernels::kFastestHere);
   if (!system.Analyze(graph, UvLaplacianMaxFactorEntries(n), build_operator)) {
     return false;
   }

@@ -62,6 +62,13 @@ class UvLaplacianSystem {
   // anchors remove).
   bool Factorize(const std::vector<int> &anchors);
 
+  // The factorisation's dense kernels (uv_dense_front.h): portable by
+  // default; decoders may take the fastest, as their output is not
+  // predicted from.
+  void set_dense_kernels(UvDenseKernels kernels) {
+    cholesky_.set_dense_kernels(kernels);
+  }
+
   // Anchors texture vertex |vertex| too, by rank-one updates of the factor.
   void AddAnchor(int vertex);
 

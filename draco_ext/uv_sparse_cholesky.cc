@@ -23,9 +23,9 @@
 #include <thread>
 #include <utility>
 
-#include <Eigen/Cholesky>
 #include <Eigen/Core>
 
+#include "draco_ext/uv_dense_front.h"
 #include "draco_ext/uv_lookahead.h"
 
 namespace draco {
@@ -738,21 +738,7 @@ bool UvSparseCholesky::FactorizeNode(
   }
   // Dense partial factorisation: L11 L11^T = F11, L21 = F21 L11^-T,
   // update = F22 - L21 L21^T.
-  if (k > 0) {
-    Eigen::Ref<Eigen::MatrixXd> diagonal = panel.topRows(k);
-    Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt(diagonal);
-    if (llt.info() != Eigen::Success || !diagonal.diagonal().allFinite()) {
-      return false;
-    }
-    if (m > k) {
-      auto below = panel.bottomRows(m - k);
-      diagonal.transpose()
-          .triangularView<Eigen::Upper>()
-          .solveInPlace<Eigen::OnTheRight>(below);
-      update.selfadjointView<Eigen::Lower>().rankUpdate(below, -1.0);
-    }
-  }
-  return true;
+  return UvFactorDenseFront(dense_kernels_, panel.data(), m, k, update.data());
 }
 
 void UvSparseCholesky::UpdateColumn(Node &node, int local,

@@ -40,7 +40,8 @@
 // mostly in the ordering and in its column-by-column numeric phase.
 //
 // Deterministic: the same pattern, coordinates and values give the same
-// factor on one build. Not bit-identical across compilers or CPUs.
+// factor on one build and, with the portable dense kernels (the default),
+// on every CPU. Not bit-identical across compilers.
 #ifndef DRACO_EXT_UV_SPARSE_CHOLESKY_H_
 #define DRACO_EXT_UV_SPARSE_CHOLESKY_H_
 
@@ -50,6 +51,8 @@
 #include <vector>
 
 #include <Eigen/Core>
+
+#include "draco_ext/uv_dense_front.h"
 
 namespace draco {
 
@@ -94,6 +97,9 @@ class UvSparseCholesky {
   // At most 2 (the default) or 1 thread for Analyze(), Factorize() and
   // Solve(); their results do not depend on it.
   void set_max_threads(int max_threads) { max_threads_ = max_threads; }
+  // The dense kernels of Factorize(), portable by default
+  // (uv_dense_front.h).
+  void set_dense_kernels(UvDenseKernels kernels) { dense_kernels_ = kernels; }
 
   // Replaces the factor of M by the factor of M + delta e_u e_u^T (rank-one
   // update, delta >= 0), touching only the columns on the elimination path
@@ -182,6 +188,7 @@ class UvSparseCholesky {
   std::unique_ptr<double[]> panels_;
   int64_t num_panel_entries_ = 0;
   int max_threads_ = 2;
+  UvDenseKernels dense_kernels_ = UvDenseKernels::kPortable;
   // The side subtree (nodes side_begin_ .. side_, or none when side_ < 0)
   // and the first node after it that depends on it (join_).
   int side_ = -1;

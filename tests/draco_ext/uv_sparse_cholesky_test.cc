@@ -172,18 +172,51 @@ TEST(UvSparseCholeskyTest, TwoThreadsGiveTheSameFactorAsOne) {
 
 TEST(UvSparseCholeskyTest, RejectsIndefiniteMatricesInAnySubtree) {
   GridSystem s = MakeGridSystem(200);
-  UvSparseCholesky cholesky;
-  ASSERT_TRUE(cholesky.Analyze(s.graph, int64_t{1} << 26));
-  // Negative diagonals at both ends of the grid, in different subtrees.
-  for (const int u : {0, s.matrix.size - 1}) {
-    GridSystem bad = s;
-    for (int e = bad.matrix.column_start[u]; e < bad.matrix.column_start[u + 1];
-         ++e) {
-      if (bad.matrix.row[e] == u) {
-        bad.matrix.value[e] = -1.0;
+  for (const UvDenseKernels kernels :
+       {UvDenseKernels::kPortable, UvDenseKernels::kFastestHere}) {
+    UvSparseCholesky cholesky;
+    cholesky.set_dense_kernels(kernels);
+    ASSERT_TRUE(cholesky.Analyze(s.graph, int64_t{1} << 26));
+    // Negative diagonals at both ends of the grid, in different subtrees.
+    for (const int u : {0, s.matrix.size - 1}) {
+      GridSystem bad = s;
+      for (int e = bad.matrix.column_start[u];
+           e < bad.matrix.column_start[u + 1]; ++e) {
+        if (bad.matrix.row[e] == u) {
+          bad.matrix.value[e] = -1.0;
+        }
       }
+      EXPECT_FALSE(cholesky.Factorize(bad.matrix)) << "unknown " << u;
     }
-    EXPECT_FALSE(cholesky.Factorize(bad.matrix)) << "unknown " << u;
+  }
+}
+
+// On CPUs with AVX2 and FMA the fastest kernels are another build of the
+// same algorithm, which rounds differently (uv_dense_front.h); elsewhere
+// they are the portable ones and this compares them with themselves.
+TEST(UvSparseCholeskyTest, FastestDenseKernelsSolveAsWellAndDeterministically) {
+  RecordProperty("avx2", UvDenseKernelsUseAvx2() ? "yes" : "no");
+  const GridSystem s = MakeGridNormalSystem(150);
+  UvSparseCholesky portable, fastest;
+  fastest.set_dense_kernels(UvDenseKernels::kFastestHere);
+  ASSERT_TRUE(portable.Analyze(s.graph, int64_t{1} << 26));
+  ASSERT_TRUE(fastest.Analyze(s.graph, int64_t{1} << 26));
+  ASSERT_TRUE(portable.Factorize(s.matrix));
+  const Eigen::MatrixXd x = Eigen::MatrixXd::Random(s.matrix.size, 2);
+  Eigen::MatrixXd expected = Multiply(s.matrix, x);
+  portable.Solve(expected);
+  Eigen::MatrixXd first;
+  for (int run = 0; run < 2; ++run) {
+    ASSERT_TRUE(fastest.Factorize(s.matrix));
+    Eigen::MatrixXd b = Multiply(s.matrix, x);
+    fastest.Solve(b);
+    EXPECT_LT((b - x).cwiseAbs().maxCoeff(), 1e-8);
+    EXPECT_LT((b - expected).cwiseAbs().maxCoeff(), 1e-10);
+    if (run == 0) {
+      first = b;
+    } else {
+      EXPECT_TRUE((b.array() == first.array()).all());
+    }
   }
 }
 
