@@ -64,7 +64,16 @@ UvSymmetricMatrix NormalMatrix(const UvLaplacianOperator &op,
   const int n = op.num_rows();
   UvSymmetricMatrix m;
   m.size = n;
+  m.column_start.reserve(n + 1);
   m.column_start.assign(1, 0);
+  // About the two-ring of every vertex (1 + 6 + 12 entries for an interior
+  // vertex of valence 6), so that the columns are appended without copying.
+  int64_t estimate = 0;
+  for (int u = 0; u < n; ++u) {
+    estimate += std::max(1, 3 * (op.row_start(u + 1) - op.row_start(u)) - 2);
+  }
+  m.row.reserve(estimate);
+  m.value.reserve(estimate);
   std::vector<double> accumulator(n, 0.0);
   std::vector<int> marker(n, -1);
   std::vector<int> pattern;
