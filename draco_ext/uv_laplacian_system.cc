@@ -157,12 +157,8 @@ bool UvLaplacianSystem::Factorize(const std::vector<int> &anchors) {
   DRACO_DCHECK(op_ != nullptr);
   anchors_ = anchors;
   UvSymmetricMatrix m = std::move(normal_);
-  std::vector<bool> is_anchor(m.size, false);
   for (const int a : anchors) {
-    if (!is_anchor[a]) {
-      is_anchor[a] = true;
-      AddToDiagonalEntry(&m, a, kAnchorWeight * kAnchorWeight);
-    }
+    AddToDiagonalEntry(&m, a, kAnchorWeight * kAnchorWeight);
   }
   return cholesky_.Factorize(m);
 }
