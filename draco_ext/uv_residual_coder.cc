@@ -25,10 +25,10 @@ namespace draco {
 
 namespace {
 
-constexpr uint32_t kDirectTokens = kUvResidualDirectTokens;
 constexpr int kFirstSplitBits = 4;  // bitlen(z) - 1 of the first split token.
 // z < 2^32: n <= 31, so tokens stay below 16 + 2 * 28.
-constexpr uint32_t kNumTokens = kDirectTokens + 2 * (32 - kFirstSplitBits);
+constexpr uint32_t kNumTokens =
+    kUvResidualDirectTokens + 2 * (32 - kFirstSplitBits);
 
 }  // namespace
 
@@ -41,11 +41,11 @@ void UvResidualEncoder::Add(int context, int32_t residual) {
   DRACO_DCHECK_LT(context, kUvResidualNumContexts);
   const uint32_t z = ConvertSignedIntToSymbol(residual);
   Symbol symbol{static_cast<uint8_t>(context), static_cast<uint8_t>(z), 0, 0};
-  if (z >= kDirectTokens) {
+  if (z >= kUvResidualDirectTokens) {
     const int n = MostSignificantBit(z);  // bitlen(z) - 1, >= 4.
     const uint32_t next_bit = (z >> (n - 1)) & 1;
-    symbol.token =
-        static_cast<uint8_t>(kDirectTokens + 2 * (n - kFirstSplitBits) + next_bit);
+    symbol.token = static_cast<uint8_t>(kUvResidualDirectTokens +
+                                        2 * (n - kFirstSplitBits) + next_bit);
     symbol.num_raw_bits = static_cast<uint8_t>(n - 1);
     symbol.raw_bits = z & ((uint32_t{1} << (n - 1)) - 1);
   }
@@ -107,13 +107,15 @@ bool UvResidualDecoder::DecodeSplitToken(uint32_t token, int32_t *residual) {
   if (token >= kNumTokens) {
     return false;
   }
-  const int n = static_cast<int>(token - kDirectTokens) / 2 + kFirstSplitBits;
+  const int n =
+      static_cast<int>(token - kUvResidualDirectTokens) / 2 + kFirstSplitBits;
   uint32_t low = 0;
   if (!raw_bits_.DecodeLeastSignificantBits32(n - 1, &low)) {
     return false;
   }
   *residual = ConvertSymbolToSignedInt(
-      (uint32_t{1} << n) | (((token - kDirectTokens) & 1) << (n - 1)) | low);
+      (uint32_t{1} << n) |
+      (((token - kUvResidualDirectTokens) & 1) << (n - 1)) | low);
   return true;
 }
 
