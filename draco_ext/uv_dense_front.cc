@@ -14,6 +14,9 @@
 //
 #include "draco_ext/uv_dense_front.h"
 
+#include <cstdint>
+#include <functional>
+
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 
@@ -23,8 +26,25 @@ namespace draco {
 
 #ifdef DRACO_UV_DENSE_FRONT_AVX2
 // uv_dense_front_avx2.cc.
-bool UvFactorDenseFrontAvx2(double *panel, int m, int k, double *update);
+extern const UvDenseFrontSteps kUvDenseFrontStepsAvx2;
 #endif
+
+namespace {
+
+// Fronts whose solve and update take at least this many flops (k r^2 with
+// r = m - k) are split in two jobs each: 2^25, about 2 ms.
+constexpr double kMinSplitFlops = 33554432.0;
+
+const UvDenseFrontSteps &ChooseSteps(UvDenseKernels kernels) {
+#ifdef DRACO_UV_DENSE_FRONT_AVX2
+  if (kernels == UvDenseKernels::kFastestHere && UvDenseKernelsUseAvx2()) {
+    return kUvDenseFrontStepsAvx2;
+  }
+#endif
+  return kEigenDenseFrontSteps;
+}
+
+}  // namespace
 
 bool UvDenseKernelsUseAvx2() {
 #ifdef DRACO_UV_DENSE_FRONT_AVX2
@@ -37,13 +57,41 @@ bool UvDenseKernelsUseAvx2() {
 }
 
 bool UvFactorDenseFront(UvDenseKernels kernels, double *panel, int m, int k,
-                        double *update) {
-#ifdef DRACO_UV_DENSE_FRONT_AVX2
-  if (kernels == UvDenseKernels::kFastestHere && UvDenseKernelsUseAvx2()) {
-    return UvFactorDenseFrontAvx2(panel, m, k, update);
+                        double *update, const UvForkJoin *fork_join) {
+  const UvDenseFrontSteps &steps = ChooseSteps(kernels);
+  if (k == 0) {
+    return true;
   }
-#endif
-  return FactorDenseFrontWithEigen(panel, m, k, update);
+  if (!steps.factor_diagonal(panel, m, k)) {
+    return false;
+  }
+  const int r = m - k;
+  if (r == 0) {
+    return true;
+  }
+  if (static_cast<double>(k) * r * r < kMinSplitFlops) {
+    steps.solve_rows(panel, m, k, 0, r);
+    steps.update_columns(panel, m, k, update, 0, r);
+    return true;
+  }
+  auto run = [fork_join](const std::function<void()> &a,
+                         const std::function<void()> &b) {
+    if (fork_join != nullptr) {
+      (*fork_join)(a, b);
+    } else {
+      a();
+      b();
+    }
+  };
+  // Halves of the rows; the columns split where the lower triangle's left
+  // part has half the entries: c (r - c / 2) = r^2 / 4, c ~ r (1 - 1/sqrt 2).
+  const int half = r / 2;
+  const int split = static_cast<int>(static_cast<int64_t>(r) * 293 / 1000);
+  run([&] { steps.solve_rows(panel, m, k, 0, half); },
+      [&] { steps.solve_rows(panel, m, k, half, r); });
+  run([&] { steps.update_columns(panel, m, k, update, 0, split); },
+      [&] { steps.update_columns(panel, m, k, update, split, r); });
+  return true;
 }
 
 }  // namespace draco

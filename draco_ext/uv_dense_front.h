@@ -24,6 +24,8 @@
 #ifndef DRACO_EXT_UV_DENSE_FRONT_H_
 #define DRACO_EXT_UV_DENSE_FRONT_H_
 
+#include <functional>
+
 namespace draco {
 
 enum class UvDenseKernels {
@@ -31,14 +33,35 @@ enum class UvDenseKernels {
   kFastestHere,  // AVX2 and FMA where the CPU has them, else portable.
 };
 
+// Runs two independent jobs, one after the other or at once.
+typedef std::function<void(const std::function<void()> &,
+                           const std::function<void()> &)>
+    UvForkJoin;
+
 // Partial factorisation of a front [F11 .; F21 F22] (F11 k x k):
 //   L11 L11^T = F11,   L21 = F21 L11^-T,   update += -L21 L21^T.
 // |panel| holds [F11; F21] column-major (m x k, lower triangle of F11 used)
 // and receives [L11; L21]; |update| is (m - k) x (m - k) column-major, its
 // lower triangle updated. False when F11 is not numerically positive
 // definite (or a diagonal entry of L11 is not finite).
+// Large fronts split the triangular solve by rows and the update by
+// columns into two jobs each, which |fork_join| may run at once (without
+// it, one after the other). The split depends on m and k alone, so the
+// result does not depend on |fork_join|.
 bool UvFactorDenseFront(UvDenseKernels kernels, double *panel, int m, int k,
-                        double *update);
+                        double *update, const UvForkJoin *fork_join = nullptr);
+
+// The steps of UvFactorDenseFront() in one build of the kernels.
+struct UvDenseFrontSteps {
+  // L11 L11^T = F11; false when F11 is not numerically positive definite.
+  bool (*factor_diagonal)(double *panel, int m, int k);
+  // L21 = F21 L11^-T for the rows begin .. end - 1 of F21.
+  void (*solve_rows)(double *panel, int m, int k, int begin, int end);
+  // update -= L21 L21^T for the columns begin .. end - 1 of its lower
+  // triangle.
+  void (*update_columns)(const double *panel, int m, int k, double *update,
+                         int begin, int end);
+};
 
 // True when kFastestHere uses the AVX2 build on this CPU.
 bool UvDenseKernelsUseAvx2();

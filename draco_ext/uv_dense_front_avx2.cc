@@ -12,8 +12,9 @@
 // See the License for the specific language governing permissions and
 // limitations under the License.
 //
-// UvFactorDenseFront()'s AVX2 and FMA build, compiled with -mavx2 -mfma
-// (cmake/draco_uv_extension.cmake) and called only on CPUs that have both.
+// The AVX2 and FMA build of UvFactorDenseFront()'s steps, compiled with -mavx2
+// -mfma (cmake/draco_uv_extension.cmake) and called only on CPUs that have
+// both.
 //
 // Eigen is renamed here: its templates are instantiated in other files for
 // the baseline instruction set under the same names, and the linker keeps
@@ -28,8 +29,6 @@
 
 namespace draco {
 
-bool UvFactorDenseFrontAvx2(double *panel, int m, int k, double *update) {
-  return FactorDenseFrontWithEigen(panel, m, k, update);
-}
+extern const UvDenseFrontSteps kUvDenseFrontStepsAvx2 = kEigenDenseFrontSteps;
 
 }  // namespace draco

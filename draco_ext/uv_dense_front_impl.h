@@ -12,38 +12,60 @@
 // See the License for the specific language governing permissions and
 // limitations under the License.
 //
-// The body of UvFactorDenseFront() (uv_dense_front.h), included by each of
-// its builds after Eigen. Internal linkage, so that every build keeps its
+// The steps of UvFactorDenseFront() (uv_dense_front.h), included by each
+// of its builds after Eigen. Internal linkage, so that every build keeps its
 // own copy.
 #ifndef DRACO_EXT_UV_DENSE_FRONT_IMPL_H_
 #define DRACO_EXT_UV_DENSE_FRONT_IMPL_H_
 
+#include "draco_ext/uv_dense_front.h"
+
 namespace draco {
 namespace {
 
-// Eigen's blocked dense kernels: LLT, triangular solve and a symmetric
-// rank-k update of the lower triangle.
-bool FactorDenseFrontWithEigen(double *panel_data, int m, int k,
-                               double *update_data) {
-  if (k == 0) {
-    return true;
-  }
+// Eigen's blocked dense kernels on the front [F11 .; F21 F22] of
+// uv_dense_front.h, with r = m - k rows below F11.
+
+// L11 L11^T = F11 in place (LLT). False when F11 is not numerically
+// positive definite.
+bool FactorDenseDiagonal(double *panel_data, int m, int k) {
   Eigen::Map<Eigen::MatrixXd> panel(panel_data, m, k);
   Eigen::Ref<Eigen::MatrixXd> diagonal = panel.topRows(k);
   Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt(diagonal);
-  if (llt.info() != Eigen::Success || !diagonal.diagonal().allFinite()) {
-    return false;
-  }
-  if (m > k) {
-    Eigen::Map<Eigen::MatrixXd> update(update_data, m - k, m - k);
-    auto below = panel.bottomRows(m - k);
-    diagonal.transpose()
-        .triangularView<Eigen::Upper>()
-        .solveInPlace<Eigen::OnTheRight>(below);
-    update.selfadjointView<Eigen::Lower>().rankUpdate(below, -1.0);
-  }
-  return true;
+  return llt.info() == Eigen::Success && diagonal.diagonal().allFinite();
 }
+
+// L21 = F21 L11^-T for the rows |begin| .. |end| - 1 of F21.
+void SolveDenseRows(double *panel_data, int m, int k, int begin, int end) {
+  Eigen::Map<Eigen::MatrixXd> panel(panel_data, m, k);
+  auto rows = panel.middleRows(k + begin, end - begin);
+  panel.topRows(k)
+      .transpose()
+      .triangularView<Eigen::Upper>()
+      .solveInPlace<Eigen::OnTheRight>(rows);
+}
+
+// update -= L21 L21^T for the columns |begin| .. |end| - 1 of the lower
+// triangle: a rank-k update of their diagonal block and, below it, a
+// matrix product.
+void UpdateDenseColumns(const double *panel_data, int m, int k,
+                        double *update_data, int begin, int end) {
+  const int r = m - k;
+  Eigen::Map<const Eigen::MatrixXd> panel(panel_data, m, k);
+  const auto l21 = panel.bottomRows(r);
+  Eigen::Map<Eigen::MatrixXd> update(update_data, r, r);
+  const int width = end - begin;
+  update.block(begin, begin, width, width)
+      .selfadjointView<Eigen::Lower>()
+      .rankUpdate(l21.middleRows(begin, width), -1.0);
+  if (end < r) {
+    update.block(end, begin, r - end, width).noalias() -=
+        l21.bottomRows(r - end) * l21.middleRows(begin, width).transpose();
+  }
+}
+
+constexpr UvDenseFrontSteps kEigenDenseFrontSteps = {
+    FactorDenseDiagonal, SolveDenseRows, UpdateDenseColumns};
 
 }  // namespace
 }  // namespace draco

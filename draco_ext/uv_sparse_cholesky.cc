@@ -14,16 +14,16 @@
 //
 #include "draco_ext/uv_sparse_cholesky.h"
 
+#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 #include <condition_variable>
 #include <cstdint>
+#include <deque>
 #include <mutex>
 #include <numeric>
 #include <thread>
 #include <utility>
-
-#include <Eigen/Core>
 
 #include "draco_ext/uv_dense_front.h"
 #include "draco_ext/uv_lookahead.h"
@@ -39,6 +39,8 @@ constexpr int kLeafPoints = 32;
 // one thread.
 constexpr double kMinThreadFlops = 1e8;
 constexpr size_t kMinThreadPoints = 20000;
+// Factorize() runs subtrees of at most this share of the work as one task.
+constexpr double kMaxTaskShare = 1.0 / 64;
 
 }  // namespace
 
@@ -462,7 +464,7 @@ bool UvSparseCholesky::Analyze(const UvMatrixGraph &graph,
               static_cast<int>(i));
   }
   side_ = SideSubtree();
-  ChooseFactorSubtrees();
+  ChooseFactorTasks();
   if (side_ >= 0) {
     side_begin_ = side_ - subtree_size_[side_] + 1;
     join_ =
@@ -548,51 +550,109 @@ bool UvSparseCholesky::Factorize(const UvSymmetricMatrix &matrix) {
     }
   }
   std::vector<std::vector<double>> updates(nodes_.size());
-  const int num_nodes = static_cast<int>(nodes_.size());
-  // The side subtrees on a second thread, the other nodes on this one in
-  // order; a node waits for the side subtrees it assembles. Every front's
-  // arithmetic and its children's order are the same on one thread.
+  // Every front's arithmetic and its children's order are fixed, so the
+  // factor does not depend on which thread runs which task, or when.
+  auto run_task = [&](const FactorTask &task, std::vector<int> *front_index,
+                      std::vector<int> *columns, const UvForkJoin *fork_join) {
+    for (int n = task.first_node; n <= task.last_node; ++n) {
+      if (!FactorizeNode(matrix, n, front_index, columns, &updates,
+                         fork_join)) {
+        return false;
+      }
+    }
+    return true;
+  };
+  if (factor_tasks_.size() < 2 || !MayUseSecondThread()) {
+    std::vector<int> front_index(num_unknowns(), -1), columns;
+    const FactorTask all{0, static_cast<int>(nodes_.size()) - 1, -1};
+    return run_task(all, &front_index, &columns, nullptr);
+  }
+  return RunFactorTasks(run_task);
+}
+
+template <typename RunTask>
+bool UvSparseCholesky::RunFactorTasks(const RunTask &run_task) const {
+  // Ready tasks, parents first (they are on the longest path); a task is
+  // ready when its child tasks are done.
   std::mutex mutex;
-  std::condition_variable subtree_done;
-  size_t num_done = 0;
-  bool side_ok = true, other_ok = true;
-  RunBoth(
-      [&] {
-        std::vector<int> front_index(num_unknowns(), -1), columns;
-        for (const int root : side_roots_) {
-          bool ok = true;
-          for (int n = root - subtree_size_[root] + 1; n <= root && ok; ++n) {
-            ok = FactorizeNode(matrix, n, &front_index, &columns, &updates);
-          }
-          std::lock_guard<std::mutex> lock(mutex);
-          // A failure releases every wait.
-          num_done = ok ? num_done + 1 : side_roots_.size();
-          side_ok = ok;
-          subtree_done.notify_one();
-          if (!ok) {
-            return;
-          }
-        }
-      },
-      [&] {
-        std::vector<int> front_index(num_unknowns(), -1), columns;
-        for (int n = 0; n < num_nodes && other_ok; ++n) {
-          if (in_side_[n]) {
-            continue;
-          }
-          for (const int child : nodes_[n].children) {
-            if (side_rank_[child] >= 0) {
-              std::unique_lock<std::mutex> lock(mutex);
-              const size_t rank = side_rank_[child];
-              subtree_done.wait(lock, [&] { return num_done > rank; });
-              other_ok = side_ok;
-            }
-          }
-          other_ok = other_ok &&
-                     FactorizeNode(matrix, n, &front_index, &columns, &updates);
-        }
+  std::condition_variable changed;
+  std::deque<int> ready;
+  std::vector<int> pending(factor_tasks_.size(), 0);
+  for (const FactorTask &task : factor_tasks_) {
+    if (task.parent >= 0) {
+      ++pending[task.parent];
+    }
+  }
+  for (size_t t = 0; t < factor_tasks_.size(); ++t) {
+    if (pending[t] == 0) {
+      ready.push_back(static_cast<int>(t));
+    }
+  }
+  size_t num_left = factor_tasks_.size();
+  bool ok = true;
+  // A half of a large front's dense work that the other worker may take.
+  const std::function<void()> *offer = nullptr;
+  bool offer_taken = false, offer_done = false;
+  const UvForkJoin fork_join = [&](const std::function<void()> &a,
+                                   const std::function<void()> &b) {
+    std::unique_lock<std::mutex> lock(mutex);
+    if (offer != nullptr) {  // The other worker's offer is open.
+      lock.unlock();
+      a();
+      b();
+      return;
+    }
+    offer = &b;
+    offer_taken = offer_done = false;
+    changed.notify_all();
+    lock.unlock();
+    a();
+    lock.lock();
+    if (offer_taken) {
+      changed.wait(lock, [&] { return offer_done; });
+      offer = nullptr;
+      return;
+    }
+    offer = nullptr;
+    lock.unlock();
+    b();
+  };
+  auto worker = [&] {
+    std::vector<int> front_index(num_unknowns(), -1), columns;
+    std::unique_lock<std::mutex> lock(mutex);
+    while (true) {
+      changed.wait(lock, [&] {
+        return (offer != nullptr && !offer_taken) || !ready.empty() ||
+               num_left == 0 || !ok;
       });
-  return side_ok && other_ok;
+      if (num_left == 0 || !ok) {
+        return;
+      }
+      if (offer != nullptr && !offer_taken) {
+        offer_taken = true;
+        const std::function<void()> *job = offer;
+        lock.unlock();
+        (*job)();
+        lock.lock();
+        offer_done = true;
+        changed.notify_all();
+        continue;
+      }
+      const FactorTask &task = factor_tasks_[ready.front()];
+      ready.pop_front();
+      lock.unlock();
+      const bool task_ok = run_task(task, &front_index, &columns, &fork_join);
+      lock.lock();
+      ok = ok && task_ok;
+      --num_left;
+      if (task.parent >= 0 && --pending[task.parent] == 0) {
+        ready.push_front(task.parent);
+      }
+      changed.notify_all();
+    }
+  };
+  RunBoth(worker, worker);
+  return ok;
 }
 
 bool UvSparseCholesky::MayUseSecondThread() const {
@@ -611,11 +671,8 @@ void UvSparseCholesky::RunBoth(const Side &side, const Other &other) const {
   worker.join();
 }
 
-void UvSparseCholesky::ChooseFactorSubtrees() {
+void UvSparseCholesky::ChooseFactorTasks() {
   const int num_nodes = static_cast<int>(nodes_.size());
-  side_roots_.clear();
-  side_rank_.assign(num_nodes, -1);
-  in_side_.assign(num_nodes, 0);
   std::vector<double> subtree(num_nodes);
   double total = 0;
   for (int i = 0; i < num_nodes; ++i) {
@@ -625,30 +682,32 @@ void UvSparseCholesky::ChooseFactorSubtrees() {
       subtree[i] += subtree[child];
     }
   }
+  factor_tasks_.clear();
   if (total < kMinThreadFlops) {
     return;
   }
-  // Parents come before their children in reverse order.
-  double remaining = total / 2;
+  // From the roots down (parents after children in node order): subtrees
+  // of at most kMaxTaskShare of the work are one task, larger subtrees'
+  // root nodes one task each.
+  std::vector<int> task_of(num_nodes, -1);
   for (int i = num_nodes - 1; i >= 0; --i) {
-    if (parent_[i] >= 0 && in_side_[parent_[i]]) {
-      in_side_[i] = 1;
-    } else if (subtree[i] <= remaining) {
-      in_side_[i] = 1;
-      side_roots_.push_back(i);
-      remaining -= subtree[i];
+    const int parent_task = parent_[i] < 0 ? -1 : task_of[parent_[i]];
+    if (parent_task >= 0 && factor_tasks_[parent_task].first_node <= i) {
+      task_of[i] = parent_task;  // Inside the parent's subtree task.
+      continue;
     }
+    const bool whole_subtree = subtree[i] <= total * kMaxTaskShare;
+    task_of[i] = static_cast<int>(factor_tasks_.size());
+    factor_tasks_.push_back(
+        {whole_subtree ? i - subtree_size_[i] + 1 : i, i, parent_task});
   }
-  // In the order their parents need them.
-  auto parent_order = [&](int root) {
-    return parent_[root] < 0 ? num_nodes : parent_[root];
-  };
-  std::sort(side_roots_.begin(), side_roots_.end(), [&](int a, int b) {
-    return std::make_pair(parent_order(a), a) <
-           std::make_pair(parent_order(b), b);
-  });
-  for (size_t i = 0; i < side_roots_.size(); ++i) {
-    side_rank_[side_roots_[i]] = static_cast<int>(i);
+  // In node order, children's tasks first.
+  std::reverse(factor_tasks_.begin(), factor_tasks_.end());
+  const int last = static_cast<int>(factor_tasks_.size()) - 1;
+  for (FactorTask &task : factor_tasks_) {
+    if (task.parent >= 0) {
+      task.parent = last - task.parent;
+    }
   }
 }
 
@@ -684,7 +743,8 @@ int UvSparseCholesky::SideSubtree() const {
 bool UvSparseCholesky::FactorizeNode(
     const UvSymmetricMatrix &matrix, int n, std::vector<int> *front_index_ptr,
     std::vector<int> *columns_ptr,
-    std::vector<std::vector<double>> *updates_ptr) {
+    std::vector<std::vector<double>> *updates_ptr,
+    const UvForkJoin *fork_join) {
   std::vector<int> &front_index = *front_index_ptr;
   std::vector<int> &columns = *columns_ptr;
   std::vector<std::vector<double>> &updates = *updates_ptr;
@@ -738,7 +798,8 @@ bool UvSparseCholesky::FactorizeNode(
   }
   // Dense partial factorisation: L11 L11^T = F11, L21 = F21 L11^-T,
   // update = F22 - L21 L21^T.
-  return UvFactorDenseFront(dense_kernels_, panel.data(), m, k, update.data());
+  return UvFactorDenseFront(dense_kernels_, panel.data(), m, k, update.data(),
+                            fork_join);
 }
 
 void UvSparseCholesky::UpdateColumn(Node &node, int local,

@@ -89,9 +89,10 @@ class UvSparseCholesky {
 
   // Factorises |matrix| (pattern as analysed). False when the matrix is not
   // numerically positive definite or has non-finite entries. Large
-  // factorisations put one subtree of the dissection tree on a second
-  // thread; every front's arithmetic is the same as on one thread, so the
-  // factor is bit-identical whatever the thread count and timing.
+  // factorisations share the subtrees and nodes of the dissection tree
+  // between two threads as they become ready; every front's arithmetic is
+  // the same as on one thread, so the factor is bit-identical whatever the
+  // thread count and timing.
   bool Factorize(const UvSymmetricMatrix &matrix);
 
   // At most 2 (the default) or 1 thread for Analyze(), Factorize() and
@@ -137,6 +138,15 @@ class UvSparseCholesky {
     }
   };
 
+  // Factorize()'s units of work for two threads: the nodes first_node ..
+  // last_node (a whole subtree, or one node above the subtrees); |parent|
+  // is the task that contains the parent of last_node, or -1.
+  struct FactorTask {
+    int first_node;
+    int last_node;
+    int parent;
+  };
+
   class Dissection;
 
   static double NodeFlops(const Node &node) {
@@ -149,10 +159,14 @@ class UvSparseCholesky {
   // The subtree to solve on a second thread (its root node), or -1 for one
   // thread: the one that splits the work below its ancestors most evenly.
   int SideSubtree() const;
-  // Chooses side_roots_ for Factorize(): from the roots down, every subtree
-  // that still fits into half the work, so that several subtrees (charts,
-  // branches at different depths) balance the two threads.
-  void ChooseFactorSubtrees();
+  // Chooses factor_tasks_ (none when Factorize() stays on one thread).
+  void ChooseFactorTasks();
+  // Runs |run_task| (bool(const FactorTask &, std::vector<int> *front_index,
+  // std::vector<int> *columns, const UvForkJoin *)) on every factor task,
+  // children's tasks first, on two threads, which also share the halves of
+  // large fronts (UvFactorDenseFront()); false when one fails.
+  template <typename RunTask>
+  bool RunFactorTasks(const RunTask &run_task) const;
   // True when a second thread may be used: allowed by set_max_threads()
   // and by UvSecondThreadAvailable() (SetUvMaxThreads(), cores, WebAssembly).
   bool MayUseSecondThread() const;
@@ -168,10 +182,12 @@ class UvSparseCholesky {
                     Eigen::MatrixXd *gathered) const;
   // Factorises node |n| with the workspace |front_index| (-1 or stale
   // entries, one per unknown) and |columns|. |updates| holds every node's
-  // update matrix until its parent has assembled it.
+  // update matrix until its parent has assembled it. |fork_join| (or null)
+  // may run the halves of a large front's dense work at once.
   bool FactorizeNode(const UvSymmetricMatrix &matrix, int n,
                      std::vector<int> *front_index, std::vector<int> *columns,
-                     std::vector<std::vector<double>> *updates);
+                     std::vector<std::vector<double>> *updates,
+                     const UvForkJoin *fork_join);
   // The front's global column numbers, own columns first.
   void FrontColumns(const Node &node, std::vector<int> *columns) const;
   Eigen::Map<Eigen::MatrixXd> Panel(const Node &node);
@@ -189,18 +205,13 @@ class UvSparseCholesky {
   int64_t num_panel_entries_ = 0;
   int max_threads_ = 2;
   UvDenseKernels dense_kernels_ = UvDenseKernels::kPortable;
-  // The side subtree (nodes side_begin_ .. side_, or none when side_ < 0)
-  // and the first node after it that depends on it (join_).
+  // Solve()'s side subtree (nodes side_begin_ .. side_, or none when
+  // side_ < 0) and the first node after it that depends on it (join_).
   int side_ = -1;
   int side_begin_ = 0;
   int join_ = 0;
-  // Factorize()'s second thread: the disjoint subtrees rooted at
-  // side_roots_, in the order the other nodes assemble them.
-  // side_rank_[node] is a root's position in side_roots_, else -1;
-  // in_side_[node] whether a node belongs to one of these subtrees.
-  std::vector<int> side_roots_;
-  std::vector<int> side_rank_;
-  std::vector<char> in_side_;
+  // In node order, so children's tasks come first.
+  std::vector<FactorTask> factor_tasks_;
 };
 
 }  // namespace draco

@@ -151,8 +151,9 @@ TEST(UvSparseCholeskyTest, SolvesALargeGridSystem) {
 }
 
 TEST(UvSparseCholeskyTest, TwoThreadsGiveTheSameFactorAsOne) {
-  // Large enough for Factorize() to use a second thread.
-  const GridSystem s = MakeGridSystem(200);
+  // Large enough for Factorize() to use a second thread, and for the
+  // fronts below the root to be split between the threads (k r^2 > 2^25).
+  const GridSystem s = MakeGridSystem(300);
   UvSparseCholesky one, two;
   one.set_max_threads(1);
   ASSERT_TRUE(one.Analyze(s.graph, int64_t{1} << 26));
