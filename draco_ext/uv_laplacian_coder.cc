@@ -18,6 +18,8 @@
 #include <cmath>
 #include <numeric>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "draco/core/varint_decoding.h"
 #include "draco/core/varint_encoding.h"
@@ -52,10 +54,12 @@ class LaplacianSetup {
  public:
   explicit LaplacianSetup(UvLaplacianKind kind) : kind_(kind) {}
 
-  // Computes everything below; |graph| is UvTextureGraph(mesh).
-  void Build(const UvLaplacianMesh &mesh, const UvMatrixGraph &graph) {
+  // Computes everything below; |graph| and |boundary| come from
+  // UvTextureGraph(mesh).
+  void Build(const UvLaplacianMesh &mesh, const UvMatrixGraph &graph,
+             std::vector<bool> boundary) {
     charts_ = ComputeUvCharts(mesh, UvMinChartSizeForSecondAnchor(kind_));
-    boundary_ = UvBoundaryVertices(mesh, graph);
+    boundary_ = std::move(boundary);
     op_.Build(mesh, graph, kind_);
   }
 
@@ -178,9 +182,10 @@ class LaplacianEncoder {
 
   // Encodes into |buffer|; false when the system is singular.
   bool Run(EncoderBuffer *buffer, UvValues *reconstruction) {
-    const UvMatrixGraph graph = UvTextureGraph(mesh_);
+    std::vector<bool> boundary;
+    const UvMatrixGraph graph = UvTextureGraph(mesh_, &boundary);
     auto build_operator = [&] {
-      setup_.Build(mesh_, graph);
+      setup_.Build(mesh_, graph, std::move(boundary));
       QuantizeResiduals();
       return &setup_.op();
     };
@@ -558,10 +563,11 @@ bool DecodeUvLaplacian(const UvLaplacianMesh &mesh, DecoderBuffer *buffer,
   if (!DecodeHeader(buffer, &kind, &step, frame_bits)) {
     return false;
   }
-  const UvMatrixGraph graph = UvTextureGraph(mesh);
+  std::vector<bool> boundary;
+  const UvMatrixGraph graph = UvTextureGraph(mesh, &boundary);
   LaplacianSetup setup(kind);
   auto build_operator = [&] {
-    setup.Build(mesh, graph);
+    setup.Build(mesh, graph, std::move(boundary));
     return &setup.op();
   };
   UvLaplacianSystem system;

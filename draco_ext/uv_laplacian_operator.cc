@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+#include <utility>
 
 namespace draco {
 
@@ -153,9 +154,39 @@ RowWeights ComputeRowWeights(const UvLaplacianMesh &mesh,
   return rows;
 }
 
+// Vertices with an edge of other than two faces; |uses| counts the faces
+// of every edge slot of |graph|, faces with repeated corners included,
+// which are taken out here (they are not part of the texture connectivity).
+std::vector<bool> BoundaryFromEdgeUses(const UvLaplacianMesh &mesh,
+                                       const UvMatrixGraph &graph,
+                                       std::vector<int> uses) {
+  for (const auto &face : mesh.faces) {
+    if (HasDistinctCorners(face)) {
+      continue;
+    }
+    for (int k = 0; k < 3; ++k) {
+      for (const int other : {face[(k + 1) % 3], face[(k + 2) % 3]}) {
+        if (other != face[k]) {
+          --uses[Slot(graph, face[k], other)];
+        }
+      }
+    }
+  }
+  std::vector<bool> boundary(mesh.num_vertices(), false);
+  for (int v = 0; v < mesh.num_vertices(); ++v) {
+    for (int s = graph.start[v]; s < graph.start[v + 1]; ++s) {
+      if (uses[s] != 2) {
+        boundary[v] = true;
+      }
+    }
+  }
+  return boundary;
+}
+
 }  // namespace
 
-UvMatrixGraph UvTextureGraph(const UvLaplacianMesh &mesh) {
+UvMatrixGraph UvTextureGraph(const UvLaplacianMesh &mesh,
+                             std::vector<bool> *boundary) {
   const int n = mesh.num_vertices();
   UvMatrixGraph graph;
   std::vector<int> &start = graph.start;
@@ -175,7 +206,10 @@ UvMatrixGraph UvTextureGraph(const UvLaplacianMesh &mesh) {
       neighbour[fill[face[k]]++] = face[(k + 2) % 3];
     }
   }
-  // Sort, drop duplicates and self references, compact.
+  // Sort, drop duplicates and self references, compact. Every face of v
+  // lists each of its other two corners once, so a neighbour's count is the
+  // number of faces of the edge.
+  std::vector<int> uses(neighbour.size(), 0);
   int out = 0;
   for (int v = 0; v < n; ++v) {
     const auto begin = neighbour.begin() + start[v];
@@ -183,38 +217,23 @@ UvMatrixGraph UvTextureGraph(const UvLaplacianMesh &mesh) {
     std::sort(begin, end);
     const int row_begin = out;
     for (auto it = begin; it != end; ++it) {
-      if (*it != v && (out == row_begin || neighbour[out - 1] != *it)) {
+      if (*it == v) {
+        continue;
+      }
+      if (out == row_begin || neighbour[out - 1] != *it) {
         neighbour[out++] = *it;
       }
+      ++uses[out - 1];
     }
     start[v] = row_begin;
   }
   start[n] = out;
   neighbour.resize(out);
+  if (boundary != nullptr) {
+    uses.resize(out);
+    *boundary = BoundaryFromEdgeUses(mesh, graph, std::move(uses));
+  }
   return graph;
-}
-
-std::vector<bool> UvBoundaryVertices(const UvLaplacianMesh &mesh,
-                                     const UvMatrixGraph &graph) {
-  std::vector<int> uses(graph.neighbour.size(), 0);
-  for (const auto &face : mesh.faces) {
-    if (!HasDistinctCorners(face)) {
-      continue;
-    }
-    for (int k = 0; k < 3; ++k) {
-      ++uses[Slot(graph, face[k], face[(k + 1) % 3])];
-      ++uses[Slot(graph, face[(k + 1) % 3], face[k])];
-    }
-  }
-  std::vector<bool> boundary(mesh.num_vertices(), false);
-  for (int v = 0; v < mesh.num_vertices(); ++v) {
-    for (int s = graph.start[v]; s < graph.start[v + 1]; ++s) {
-      if (uses[s] != 2) {
-        boundary[v] = true;
-      }
-    }
-  }
-  return boundary;
 }
 
 int UvMinChartSizeForSecondAnchor(UvLaplacianKind kind) {

@@ -90,13 +90,12 @@ int UvMinChartSizeForSecondAnchor(UvLaplacianKind kind);
 // the pattern of every operator of the mesh (UvLaplacianOperator::Build())
 // without the diagonal, and, needing no 3D geometry, the first thing
 // encoder and decoder compute, so that the unknowns can be ordered while
-// the weights are computed (UvLaplacianSystem::Analyze()).
-UvMatrixGraph UvTextureGraph(const UvLaplacianMesh &mesh);
-
-// Texture vertices on the boundary of the texture connectivity; |graph| is
-// UvTextureGraph(mesh).
-std::vector<bool> UvBoundaryVertices(const UvLaplacianMesh &mesh,
-                                     const UvMatrixGraph &graph);
+// the weights are computed (UvLaplacianSystem::Analyze()). |boundary|, if
+// not null, receives the texture vertices on the boundary of the texture
+// connectivity: those with an edge that is not shared by exactly two faces
+// with distinct corners (counted while the neighbour lists are compacted).
+UvMatrixGraph UvTextureGraph(const UvLaplacianMesh &mesh,
+                             std::vector<bool> *boundary = nullptr);
 
 UvCharts ComputeUvCharts(const UvLaplacianMesh &mesh,
                          int min_size_for_second_anchor);

@@ -239,6 +239,61 @@ TEST(UvLaplacianOperatorTest, TextureGraphIsThePatternWithoutTheDiagonal) {
   }
 }
 
+// Per vertex: whether an edge of |graph| at it has other than two faces
+// with distinct corners.
+std::vector<bool> BruteForceBoundary(const UvLaplacianMesh &mesh,
+                                     const UvMatrixGraph &graph) {
+  std::map<std::pair<int, int>, int> faces_of_edge;
+  for (const auto &f : mesh.faces) {
+    if (f[0] != f[1] && f[1] != f[2] && f[2] != f[0]) {
+      for (int k = 0; k < 3; ++k) {
+        ++faces_of_edge[std::minmax(f[k], f[(k + 1) % 3])];
+      }
+    }
+  }
+  std::vector<bool> boundary(mesh.num_vertices(), false);
+  for (int v = 0; v < mesh.num_vertices(); ++v) {
+    for (int e = graph.start[v]; e < graph.start[v + 1]; ++e) {
+      const auto it = faces_of_edge.find(std::minmax(v, graph.neighbour[e]));
+      boundary[v] = boundary[v] || it == faces_of_edge.end() || it->second != 2;
+    }
+  }
+  return boundary;
+}
+
+TEST(UvLaplacianOperatorTest, BoundaryVerticesHaveAnEdgeOfOtherThanTwoFaces) {
+  std::vector<UvTestCase> cases = TestdataCases();
+  cases.push_back(ManyChartsCase(4, 7));
+  // Faces with repeated corners (no faces of the texture connectivity) on
+  // an edge between interior vertices, and a third face on another.
+  UvTestCase odd = TestdataCases().back();
+  const std::vector<bool> before =
+      BruteForceBoundary(odd.mesh, UvTextureGraph(odd.mesh));
+  std::vector<std::array<int, 3>> interior_faces;
+  for (const auto &f : odd.mesh.faces) {
+    if (!before[f[0]] && !before[f[1]] && !before[f[2]]) {
+      interior_faces.push_back(f);
+    }
+  }
+  ASSERT_GE(interior_faces.size(), 2u);
+  const auto &f = interior_faces.front();
+  odd.mesh.faces.push_back({f[0], f[0], f[1]});
+  odd.mesh.faces.push_back({f[2], f[2], f[2]});
+  const auto &g = interior_faces.back();
+  odd.mesh.faces.push_back({g[0], g[1], f[2]});
+  odd.name += " with odd faces";
+  cases.push_back(odd);
+  for (const UvTestCase &c : cases) {
+    std::vector<bool> boundary;
+    const UvMatrixGraph graph = UvTextureGraph(c.mesh, &boundary);
+    const std::vector<bool> expected = BruteForceBoundary(c.mesh, graph);
+    ASSERT_EQ(boundary.size(), expected.size()) << c.name;
+    for (int v = 0; v < c.mesh.num_vertices(); ++v) {
+      EXPECT_EQ(boundary[v], expected[v]) << c.name << " vertex " << v;
+    }
+  }
+}
+
 // Analyze() and Factorize() of the system of |op| with |anchors|.
 bool SetUpSystem(const UvLaplacianMesh &mesh, const UvLaplacianOperator &op,
                  const std::vector<int> &anchors, UvLaplacianSystem *system) {
