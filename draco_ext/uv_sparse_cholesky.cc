@@ -484,7 +484,10 @@ bool UvSparseCholesky::ComputeUpdateRows(const UvMatrixGraph &graph) {
   // away) and those its children update. A child's update row before the
   // node's own columns would belong to a sibling subtree, which the
   // dissection never couples; checked, because the extend-add relies on it.
-  std::vector<int> seen(graph.size(), -1);
+  // Each neighbour of the node's unknowns is searched once (|near|), not
+  // once per unknown next to it.
+  std::vector<int> seen(graph.size(), -1), searched(graph.size(), -1);
+  std::vector<int> near;
   for (size_t i = 0; i < nodes_.size(); ++i) {
     Node &node = nodes_[i];
     const int end = node.first_column + node.num_columns;
@@ -496,14 +499,21 @@ bool UvSparseCholesky::ComputeUpdateRows(const UvMatrixGraph &graph) {
         rows.push_back(column);
       }
     };
+    near.clear();
     for (int column = node.first_column; column < end; ++column) {
       const int u = unknown_of_[column];
       for (int e = graph.start[u]; e < graph.start[u + 1]; ++e) {
         const int m = graph.neighbour[e];
-        add(column_of_[m]);
-        for (int f = graph.start[m]; f < graph.start[m + 1]; ++f) {
-          add(column_of_[graph.neighbour[f]]);
+        if (searched[m] != static_cast<int>(i)) {
+          searched[m] = static_cast<int>(i);
+          near.push_back(m);
         }
+      }
+    }
+    for (const int m : near) {
+      add(column_of_[m]);
+      for (int f = graph.start[m]; f < graph.start[m + 1]; ++f) {
+        add(column_of_[graph.neighbour[f]]);
       }
     }
     for (const int child : node.children) {
