@@ -39,6 +39,8 @@ constexpr int kLeafPoints = 32;
 // one thread.
 constexpr double kMinThreadFlops = 1e8;
 constexpr size_t kMinThreadPoints = 20000;
+// Solve() stays on one thread for factors of fewer entries (8 MB).
+constexpr int64_t kMinSolveThreadEntries = int64_t{1} << 20;
 // Factorize() runs subtrees of at most this share of the work as one task.
 constexpr double kMaxTaskShare = 1.0 / 64;
 
@@ -463,13 +465,8 @@ bool UvSparseCholesky::Analyze(const UvMatrixGraph &graph,
               node_of_column_.begin() + node.first_column + node.num_columns,
               static_cast<int>(i));
   }
-  side_ = SideSubtree();
+  ChooseSolveSubtrees();
   ChooseFactorTasks();
-  if (side_ >= 0) {
-    side_begin_ = side_ - subtree_size_[side_] + 1;
-    join_ =
-        parent_[side_] < 0 ? static_cast<int>(nodes_.size()) : parent_[side_];
-  }
   if (offset > max_entries) {
     return false;
   }
@@ -721,33 +718,38 @@ void UvSparseCholesky::ChooseFactorTasks() {
   }
 }
 
-int UvSparseCholesky::SideSubtree() const {
-  // prefix[i]: the work of nodes 0 .. i - 1 (postorder).
+void UvSparseCholesky::ChooseSolveSubtrees() {
+  // Solve() reads every entry of the factor once per pass.
   const int num_nodes = static_cast<int>(nodes_.size());
-  std::vector<double> subtree(num_nodes), prefix(num_nodes + 1, 0.0);
+  std::vector<int64_t> subtree(num_nodes);
+  int64_t total = 0;
   for (int i = 0; i < num_nodes; ++i) {
-    subtree[i] = NodeFlops(nodes_[i]);
+    subtree[i] =
+        static_cast<int64_t>(nodes_[i].front_size()) * nodes_[i].num_columns;
+    total += subtree[i];
     for (const int child : nodes_[i].children) {
       subtree[i] += subtree[child];
     }
-    prefix[i + 1] = prefix[i] + NodeFlops(nodes_[i]);
   }
-  if (prefix[num_nodes] < kMinThreadFlops) {
-    return -1;
+  solve_roots_.clear();
+  in_solve_side_.assign(num_nodes, 0);
+  if (total < kMinSolveThreadEntries) {
+    return;
   }
-  // Nodes from the side subtree's parent on run after the join.
-  int best = -1;
-  double best_time = prefix[num_nodes];
-  for (int i = 0; i < num_nodes; ++i) {
-    const double before_join = prefix[parent_[i] < 0 ? num_nodes : parent_[i]];
-    const double time = std::max(before_join - subtree[i], subtree[i]) +
-                        prefix[num_nodes] - before_join;
-    if (time < best_time) {
-      best = i;
-      best_time = time;
+  // From the roots down (parents after children in node order), every
+  // subtree that still fits into half the work.
+  int64_t remaining = total / 2;
+  for (int i = num_nodes - 1; i >= 0; --i) {
+    if (parent_[i] >= 0 && in_solve_side_[parent_[i]]) {
+      in_solve_side_[i] = 1;
+    } else if (subtree[i] <= remaining) {
+      in_solve_side_[i] = 1;
+      solve_roots_.push_back(i);
+      remaining -= subtree[i];
     }
   }
-  return best;
+  // In node order, which is the order of their parents too.
+  std::reverse(solve_roots_.begin(), solve_roots_.end());
 }
 
 bool UvSparseCholesky::FactorizeNode(
@@ -878,7 +880,7 @@ void UvSparseCholesky::ForwardNode(const Node &node, Eigen::MatrixXd *y,
   for (size_t i = 0; i < node.update_rows.size(); ++i) {
     const int row = node.update_rows[i];
     if (outside != nullptr && row >= outside_begin) {
-      outside->row(row - outside_begin) -= gathered->row(i);
+      outside->row(row) -= gathered->row(i);
     } else {
       y->row(row) -= gathered->row(i);
     }
@@ -906,59 +908,98 @@ void UvSparseCholesky::BackwardNode(const Node &node, Eigen::MatrixXd *y,
   panel.topRows(k).transpose().triangularView<Eigen::Upper>().solveInPlace(own);
 }
 
+// How far one thread of Solve() has got, for the other to wait on.
+class UvSparseCholesky::SolveProgress {
+ public:
+  void Advance(int value) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    value_ = value;
+    changed_.notify_one();
+  }
+  void WaitFor(int value) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    changed_.wait(lock, [&] { return value_ >= value; });
+  }
+  void Reset() { value_ = 0; }
+
+ private:
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  int value_ = 0;
+};
+
 void UvSparseCholesky::Solve(Eigen::Ref<Eigen::MatrixXd> rhs) const {
   const int num_rhs = static_cast<int>(rhs.cols());
-  const int num_nodes = static_cast<int>(nodes_.size());
   Eigen::MatrixXd y(num_unknowns(), num_rhs);
   for (int u = 0; u < num_unknowns(); ++u) {
     y.row(column_of_[u]) = rhs.row(u);
   }
-  Eigen::MatrixXd gathered, side_gathered;
-  // Forward substitution. The side subtree's updates of the columns after
-  // the join go to |outside| and are added after it, whatever the threads.
-  const int side_begin = side_ < 0 ? num_nodes : side_begin_;
-  const int side_end = side_ < 0 ? num_nodes : side_ + 1;
-  const int join = side_ < 0 ? num_nodes : join_;
-  const int outside_begin =
-      join < num_nodes ? nodes_[join].first_column : num_unknowns();
-  Eigen::MatrixXd outside =
-      Eigen::MatrixXd::Zero(num_unknowns() - outside_begin, num_rhs);
+  // The side subtrees' updates of other nodes' rows go to |outside|, and
+  // are added to a node's rows just before it is solved, whatever the
+  // threads.
+  Eigen::MatrixXd outside = Eigen::MatrixXd::Zero(num_unknowns(), num_rhs);
+  SolveProgress progress;
   RunBoth(
       [&] {
-        for (int n = side_begin; n < side_end; ++n) {
-          ForwardNode(nodes_[n], &y, &outside, outside_begin, &side_gathered);
+        Eigen::MatrixXd gathered;
+        for (const int root : solve_roots_) {
+          const int first = root - subtree_size_[root] + 1;
+          for (int n = first; n <= root; ++n) {
+            ForwardNode(nodes_[n], &y, &outside,
+                        nodes_[root].first_column + nodes_[root].num_columns,
+                        &gathered);
+          }
+          progress.Advance(root + 1);
         }
       },
-      [&] {
-        for (int n = 0; n < join; ++n) {
-          if (n < side_begin || n >= side_end) {
-            ForwardNode(nodes_[n], &y, nullptr, 0, &gathered);
-          }
-        }
-      });
-  y.bottomRows(outside.rows()) += outside;
-  for (int n = join; n < num_nodes; ++n) {
-    ForwardNode(nodes_[n], &y, nullptr, 0, &gathered);
-  }
+      [&] { ForwardOtherNodes(&y, outside, &progress); });
+  progress.Reset();
   // Back substitution: a node reads only its ancestors' columns.
-  for (int n = num_nodes - 1; n >= join; --n) {
-    BackwardNode(nodes_[n], &y, &gathered);
-  }
-  RunBoth(
-      [&] {
-        for (int n = side_end - 1; n >= side_begin; --n) {
-          BackwardNode(nodes_[n], &y, &side_gathered);
-        }
-      },
-      [&] {
-        for (int n = join - 1; n >= 0; --n) {
-          if (n < side_begin || n >= side_end) {
-            BackwardNode(nodes_[n], &y, &gathered);
-          }
-        }
-      });
+  RunBoth([&] { BackwardOtherNodes(&y, &progress); },
+          [&] {
+            Eigen::MatrixXd gathered;
+            for (auto root = solve_roots_.rbegin(); root != solve_roots_.rend();
+                 ++root) {
+              const int parent = parent_[*root];
+              progress.WaitFor(parent < 0 ? 0 : num_nodes() - parent);
+              for (int n = *root; n > *root - subtree_size_[*root]; --n) {
+                BackwardNode(nodes_[n], &y, &gathered);
+              }
+            }
+          });
   for (int u = 0; u < num_unknowns(); ++u) {
     rhs.row(u) = y.row(column_of_[u]);
+  }
+}
+
+void UvSparseCholesky::ForwardOtherNodes(Eigen::MatrixXd *y,
+                                         const Eigen::MatrixXd &outside,
+                                         SolveProgress *progress) const {
+  Eigen::MatrixXd gathered;
+  for (int n = 0; n < num_nodes(); ++n) {
+    if (in_solve_side_[n]) {
+      continue;
+    }
+    for (const int child : nodes_[n].children) {
+      if (in_solve_side_[child]) {
+        progress->WaitFor(child + 1);
+      }
+    }
+    const Node &node = nodes_[n];
+    y->middleRows(node.first_column, node.num_columns) +=
+        outside.middleRows(node.first_column, node.num_columns);
+    ForwardNode(node, y, nullptr, 0, &gathered);
+  }
+}
+
+void UvSparseCholesky::BackwardOtherNodes(Eigen::MatrixXd *y,
+                                          SolveProgress *progress) const {
+  Eigen::MatrixXd gathered;
+  for (int n = num_nodes() - 1; n >= 0; --n) {
+    if (!in_solve_side_[n]) {
+      BackwardNode(nodes_[n], y, &gathered);
+    }
+    progress->Advance(num_nodes() - n);
   }
 }
 

@@ -156,9 +156,9 @@ class UvSparseCholesky {
 
   // False when a child updates a column of a sibling subtree.
   bool ComputeUpdateRows(const UvMatrixGraph &graph);
-  // The subtree to solve on a second thread (its root node), or -1 for one
-  // thread: the one that splits the work below its ancestors most evenly.
-  int SideSubtree() const;
+  // Chooses solve_roots_: from the roots down, every subtree that still
+  // fits into half of the factor's entries (none for small factors).
+  void ChooseSolveSubtrees();
   // Chooses factor_tasks_ (none when Factorize() stays on one thread).
   void ChooseFactorTasks();
   // Runs |run_task| (bool(const FactorTask &, std::vector<int> *front_index,
@@ -173,8 +173,15 @@ class UvSparseCholesky {
   // Runs |side| on a second thread and |other| on this one, or both here.
   template <typename Side, typename Other>
   void RunBoth(const Side &side, const Other &other) const;
+  class SolveProgress;
+  // Solve()'s passes over the nodes outside solve_roots_' subtrees; the
+  // forward pass adds each node's rows of |outside| before solving it.
+  void ForwardOtherNodes(Eigen::MatrixXd *y, const Eigen::MatrixXd &outside,
+                         SolveProgress *progress) const;
+  void BackwardOtherNodes(Eigen::MatrixXd *y, SolveProgress *progress) const;
+  int num_nodes() const { return static_cast<int>(nodes_.size()); }
   // Forward substitution of one node; with |outside|, updates of rows from
-  // |outside_begin| on go to outside->row(row - outside_begin).
+  // |outside_begin| on go to outside->row(row) instead of y->row(row).
   void ForwardNode(const Node &node, Eigen::MatrixXd *y,
                    Eigen::MatrixXd *outside, int outside_begin,
                    Eigen::MatrixXd *gathered) const;
@@ -205,11 +212,11 @@ class UvSparseCholesky {
   int64_t num_panel_entries_ = 0;
   int max_threads_ = 2;
   UvDenseKernels dense_kernels_ = UvDenseKernels::kPortable;
-  // Solve()'s side subtree (nodes side_begin_ .. side_, or none when
-  // side_ < 0) and the first node after it that depends on it (join_).
-  int side_ = -1;
-  int side_begin_ = 0;
-  int join_ = 0;
+  // Solve()'s second thread: the disjoint subtrees rooted at solve_roots_
+  // (ascending), about half of the factor; in_solve_side_[node] whether a
+  // node belongs to one of them.
+  std::vector<int> solve_roots_;
+  std::vector<char> in_solve_side_;
   // In node order, so children's tasks come first.
   std::vector<FactorTask> factor_tasks_;
 };

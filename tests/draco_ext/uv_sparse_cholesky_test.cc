@@ -151,14 +151,16 @@ TEST(UvSparseCholeskyTest, SolvesALargeGridSystem) {
 }
 
 TEST(UvSparseCholeskyTest, TwoThreadsGiveTheSameFactorAsOne) {
-  // Large enough for Factorize() to use a second thread, and for the
-  // fronts below the root to be split between the threads (k r^2 > 2^25).
+  // Large enough for Factorize() and Solve() to use a second thread, and
+  // for the fronts below the root to be split between the threads
+  // (k r^2 > 2^25).
   const GridSystem s = MakeGridSystem(300);
   UvSparseCholesky one, two;
   one.set_max_threads(1);
   ASSERT_TRUE(one.Analyze(s.graph, int64_t{1} << 26));
   ASSERT_TRUE(two.Analyze(s.graph, int64_t{1} << 26));
   ASSERT_GT(one.factor_flops(), 1e8);
+  ASSERT_GT(one.factor_size(), 1 << 20);
   ASSERT_TRUE(one.Factorize(s.matrix));
   const Eigen::MatrixXd rhs = Eigen::MatrixXd::Random(s.matrix.size, 2);
   Eigen::MatrixXd expected = rhs;
