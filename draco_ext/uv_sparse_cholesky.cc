@@ -14,16 +14,18 @@
 //
 #include "draco_ext/uv_sparse_cholesky.h"
 
-#include <Eigen/Core>
 #include <algorithm>
 #include <cmath>
 #include <condition_variable>
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <mutex>
 #include <numeric>
 #include <thread>
 #include <utility>
+
+#include <Eigen/Core>
 
 #include "draco_ext/uv_dense_front.h"
 #include "draco_ext/uv_lookahead.h"
@@ -577,89 +579,122 @@ bool UvSparseCholesky::Factorize(const UvSymmetricMatrix &matrix) {
   return RunFactorTasks(run_task);
 }
 
-template <typename RunTask>
-bool UvSparseCholesky::RunFactorTasks(const RunTask &run_task) const {
-  // Ready tasks, parents first (they are on the longest path); a task is
-  // ready when its child tasks are done.
-  std::mutex mutex;
-  std::condition_variable changed;
-  std::deque<int> ready;
-  std::vector<int> pending(factor_tasks_.size(), 0);
-  for (const FactorTask &task : factor_tasks_) {
-    if (task.parent >= 0) {
-      ++pending[task.parent];
+// The factor tasks for two workers: a task is ready when its child tasks
+// are done, and parents go first (they are on the longest path). A worker
+// that splits a large front offers one half of each step to the other
+// (ForkJoin()), which takes it while waiting for a task.
+class UvSparseCholesky::TaskQueue {
+ public:
+  explicit TaskQueue(const std::vector<FactorTask> &tasks)
+      : tasks_(tasks), pending_(tasks.size(), 0), num_left_(tasks.size()) {
+    for (const FactorTask &task : tasks) {
+      if (task.parent >= 0) {
+        ++pending_[task.parent];
+      }
+    }
+    for (size_t t = 0; t < tasks.size(); ++t) {
+      if (pending_[t] == 0) {
+        ready_.push_back(static_cast<int>(t));
+      }
     }
   }
-  for (size_t t = 0; t < factor_tasks_.size(); ++t) {
-    if (pending[t] == 0) {
-      ready.push_back(static_cast<int>(t));
-    }
-  }
-  size_t num_left = factor_tasks_.size();
-  bool ok = true;
-  // A half of a large front's dense work that the other worker may take.
-  const std::function<void()> *offer = nullptr;
-  bool offer_taken = false, offer_done = false;
-  const UvForkJoin fork_join = [&](const std::function<void()> &a,
-                                   const std::function<void()> &b) {
-    std::unique_lock<std::mutex> lock(mutex);
-    if (offer != nullptr) {  // The other worker's offer is open.
+
+  // The next ready task, running offered halves meanwhile; false when all
+  // tasks are done or one failed.
+  bool Next(int *task) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    while (true) {
+      changed_.wait(lock, [&] {
+        return HasOpenOffer() || !ready_.empty() || num_left_ == 0 || !ok_;
+      });
+      if (num_left_ == 0 || !ok_) {
+        return false;
+      }
+      if (!HasOpenOffer()) {
+        *task = ready_.front();
+        ready_.pop_front();
+        return true;
+      }
+      offer_taken_ = true;
       lock.unlock();
-      a();
-      b();
-      return;
+      (*offer_)();
+      lock.lock();
+      offer_done_ = true;
+      changed_.notify_all();
     }
-    offer = &b;
-    offer_taken = offer_done = false;
-    changed.notify_all();
+  }
+
+  void Done(int task, bool ok) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    ok_ = ok_ && ok;
+    --num_left_;
+    const int parent = tasks_[task].parent;
+    if (parent >= 0 && --pending_[parent] == 0) {
+      ready_.push_front(parent);
+    }
+    changed_.notify_all();
+  }
+
+  // Runs |a| here and offers |b| to the other worker; runs |b| here too if
+  // the other has not taken it by then (or has an offer open itself).
+  void ForkJoin(const std::function<void()> &a,
+                const std::function<void()> &b) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    const bool offered = offer_ == nullptr;
+    if (offered) {
+      offer_ = &b;
+      offer_taken_ = offer_done_ = false;
+      changed_.notify_all();
+    }
     lock.unlock();
     a();
     lock.lock();
-    if (offer_taken) {
-      changed.wait(lock, [&] { return offer_done; });
-      offer = nullptr;
+    if (offered && offer_taken_) {
+      changed_.wait(lock, [&] { return offer_done_; });
+      offer_ = nullptr;
       return;
     }
-    offer = nullptr;
+    if (offered) {
+      offer_ = nullptr;
+    }
     lock.unlock();
     b();
+  }
+
+  bool ok() const { return ok_; }
+
+ private:
+  bool HasOpenOffer() const { return offer_ != nullptr && !offer_taken_; }
+
+  const std::vector<FactorTask> &tasks_;
+  std::mutex mutex_;
+  std::condition_variable changed_;
+  std::deque<int> ready_;
+  std::vector<int> pending_;  // Child tasks not done, per task.
+  size_t num_left_;
+  bool ok_ = true;
+  const std::function<void()> *offer_ = nullptr;
+  bool offer_taken_ = false;
+  bool offer_done_ = false;
+};
+
+template <typename RunTask>
+bool UvSparseCholesky::RunFactorTasks(const RunTask &run_task) const {
+  TaskQueue queue(factor_tasks_);
+  const UvForkJoin fork_join = [&](const std::function<void()> &a,
+                                   const std::function<void()> &b) {
+    queue.ForkJoin(a, b);
   };
   auto worker = [&] {
     std::vector<int> front_index(num_unknowns(), -1), columns;
-    std::unique_lock<std::mutex> lock(mutex);
-    while (true) {
-      changed.wait(lock, [&] {
-        return (offer != nullptr && !offer_taken) || !ready.empty() ||
-               num_left == 0 || !ok;
-      });
-      if (num_left == 0 || !ok) {
-        return;
-      }
-      if (offer != nullptr && !offer_taken) {
-        offer_taken = true;
-        const std::function<void()> *job = offer;
-        lock.unlock();
-        (*job)();
-        lock.lock();
-        offer_done = true;
-        changed.notify_all();
-        continue;
-      }
-      const FactorTask &task = factor_tasks_[ready.front()];
-      ready.pop_front();
-      lock.unlock();
-      const bool task_ok = run_task(task, &front_index, &columns, &fork_join);
-      lock.lock();
-      ok = ok && task_ok;
-      --num_left;
-      if (task.parent >= 0 && --pending[task.parent] == 0) {
-        ready.push_front(task.parent);
-      }
-      changed.notify_all();
+    int task;
+    while (queue.Next(&task)) {
+      queue.Done(task, run_task(factor_tasks_[task], &front_index, &columns,
+                                &fork_join));
     }
   };
   RunBoth(worker, worker);
-  return ok;
+  return queue.ok();
 }
 
 bool UvSparseCholesky::MayUseSecondThread() const {

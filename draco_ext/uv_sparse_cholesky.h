@@ -167,6 +167,7 @@ class UvSparseCholesky {
   // large fronts (UvFactorDenseFront()); false when one fails.
   template <typename RunTask>
   bool RunFactorTasks(const RunTask &run_task) const;
+  class TaskQueue;
   // True when a second thread may be used: allowed by set_max_threads()
   // and by UvSecondThreadAvailable() (SetUvMaxThreads(), cores, WebAssembly).
   bool MayUseSecondThread() const;
