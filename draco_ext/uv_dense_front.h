@@ -20,7 +20,8 @@
 // (fused multiply-adds), so it is used only where the result need not be
 // the same on every CPU: decoding the lossy Laplacian coder, whose output
 // nothing is predicted from. Encoders use the portable build, so that
-// their anchors, and so their files, do not depend on the CPU.
+// their anchors, and so their files, depend on the CPU at most through
+// Eigen's block sizes, which follow the CPU's cache sizes.
 #ifndef DRACO_EXT_UV_DENSE_FRONT_H_
 #define DRACO_EXT_UV_DENSE_FRONT_H_
 
@@ -29,7 +30,7 @@
 namespace draco {
 
 enum class UvDenseKernels {
-  kPortable,     // The same result on every CPU (for a given build).
+  kPortable,     // The same result on every CPU with the same cache sizes.
   kFastestHere,  // AVX2 and FMA where the CPU has them, else portable.
 };
 

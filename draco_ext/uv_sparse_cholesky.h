@@ -41,7 +41,10 @@
 //
 // Deterministic: the same pattern, coordinates and values give the same
 // factor on one build and, with the portable dense kernels (the default),
-// on every CPU. Not bit-identical across compilers.
+// on every CPU with the same cache sizes: Eigen sizes its blocks from the
+// cache sizes it reads from the CPU, which changes the rounding (an L1 of
+// 16 KB or 48 KB instead of 32 KB gave other bits). Not bit-identical
+// across compilers.
 #ifndef DRACO_EXT_UV_SPARSE_CHOLESKY_H_
 #define DRACO_EXT_UV_SPARSE_CHOLESKY_H_
 
