@@ -27,6 +27,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -63,15 +64,21 @@ bool ParseArgs(int argc, char **argv, Args *args) {
   for (int i = 1; i < argc; ++i) {
     const std::string flag = argv[i];
     const bool has_value = i + 1 < argc;
-    int *target = flag == "--qp"       ? &args->settings.qp
-                  : flag == "--qt"     ? &args->settings.qt
-                  : flag == "--cl"     ? &args->settings.cl
-                  : flag == "--rounds" ? &args->rounds
-                                       : nullptr;
+    int *target = flag == "--qp"   ? &args->settings.qp
+                  : flag == "--qt" ? &args->settings.qt
+                  : flag == "--cl" ? &args->settings.cl
+                                   : nullptr;
     if (target != nullptr && has_value) {
       if (!draco::ParseUvToolSetting(argv[++i], target)) {
         return false;
       }
+    } else if (flag == "--rounds" && has_value) {
+      char *end = nullptr;
+      const long rounds = std::strtol(argv[++i], &end, 10);
+      if (*end != '\0' || rounds < 1 || rounds > 100000) {
+        return false;
+      }
+      args->rounds = static_cast<int>(rounds);
     } else if (flag == "--schemes" && has_value) {
       args->schemes = draco::SplitUvToolList(argv[++i]);
     } else if (flag == "--threads" && has_value) {
