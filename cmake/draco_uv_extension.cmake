@@ -68,7 +68,8 @@ list(
          "${draco_uv_ext}/uv_sparse_cholesky.h"
          "${draco_uv_ext}/uv_dense_front.cc"
          "${draco_uv_ext}/uv_dense_front.h"
-         "${draco_uv_ext}/uv_dense_front_impl.h")
+         "${draco_uv_ext}/uv_dense_front_impl.h"
+         "${draco_uv_ext}/uv_dense_front_portable.cc")
 
 # On x86-64, the Laplacian decoder's dense kernels also in an AVX2 and FMA
 # build, chosen at run time on CPUs that have both (uv_dense_front.h).

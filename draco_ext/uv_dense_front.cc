@@ -17,13 +17,10 @@
 #include <cstdint>
 #include <functional>
 
-#include <Eigen/Cholesky>
-#include <Eigen/Core>
-
-#include "draco_ext/uv_dense_front_impl.h"
-
 namespace draco {
 
+// uv_dense_front_portable.cc.
+extern const UvDenseFrontSteps kUvDenseFrontStepsPortable;
 #ifdef DRACO_UV_DENSE_FRONT_AVX2
 // uv_dense_front_avx2.cc.
 extern const UvDenseFrontSteps kUvDenseFrontStepsAvx2;
@@ -41,7 +38,7 @@ const UvDenseFrontSteps &ChooseSteps(UvDenseKernels kernels) {
     return kUvDenseFrontStepsAvx2;
   }
 #endif
-  return kEigenDenseFrontSteps;
+  return kUvDenseFrontStepsPortable;
 }
 
 }  // namespace

@@ -20,8 +20,9 @@
 // (fused multiply-adds), so it is used only where the result need not be
 // the same on every CPU: decoding the lossy Laplacian coder, whose output
 // nothing is predicted from. Encoders use the portable build, so that
-// their anchors, and so their files, depend on the CPU at most through
-// Eigen's block sizes, which follow the CPU's cache sizes.
+// their anchors, and so their files, are the same on every CPU of the
+// architecture: both builds block their kernels by fixed cache sizes, not by
+// those Eigen reads from the CPU (uv_dense_front_impl.h).
 #ifndef DRACO_EXT_UV_DENSE_FRONT_H_
 #define DRACO_EXT_UV_DENSE_FRONT_H_
 
@@ -30,7 +31,7 @@
 namespace draco {
 
 enum class UvDenseKernels {
-  kPortable,     // The same result on every CPU with the same cache sizes.
+  kPortable,     // The same result on every CPU of the architecture.
   kFastestHere,  // AVX2 and FMA where the CPU has them, else portable.
 };
 

@@ -858,7 +858,9 @@ void UvSparseCholesky::UpdateColumn(Node &node, int local,
   }
   Eigen::Map<Eigen::MatrixXd> panel = Panel(node);
   const double d = panel(local, local);
-  const double r = std::hypot(d, x);
+  // Not std::hypot(): C libraries differ in its last bit, while the square
+  // root is correctly rounded everywhere (d and x are far from overflow).
+  const double r = std::sqrt(d * d + x * x);
   const double c = r / d;
   const double s = x / d;
   panel(local, local) = r;
@@ -901,12 +903,16 @@ void UvSparseCholesky::ForwardNode(const Node &node, Eigen::MatrixXd *y,
   }
   const auto panel = Panel(node);
   auto own = y->middleRows(node.first_column, k);
-  panel.topRows(k).triangularView<Eigen::Lower>().solveInPlace(own);
+  // Triangular solves and matrix-vector products per right-hand side: a
+  // matrix product would copy (pack) the whole panel for the few right-hand
+  // sides, and Eigen blocks the matrix kernels (and so orders their sums) by
+  // the cache sizes it reads from the CPU, its vector kernels by fixed sizes.
+  for (int c = 0; c < own.cols(); ++c) {
+    panel.topRows(k).triangularView<Eigen::Lower>().solveInPlace(own.col(c));
+  }
   if (node.update_rows.empty()) {
     return;
   }
-  // Matrix-vector products per right-hand side: a matrix product would
-  // copy (pack) the whole panel for the few right-hand sides.
   const auto below = panel.bottomRows(node.update_rows.size());
   gathered->resize(node.update_rows.size(), own.cols());
   for (int c = 0; c < own.cols(); ++c) {
@@ -940,7 +946,10 @@ void UvSparseCholesky::BackwardNode(const Node &node, Eigen::MatrixXd *y,
       own.col(c).noalias() -= below.transpose() * gathered->col(c);
     }
   }
-  panel.topRows(k).transpose().triangularView<Eigen::Upper>().solveInPlace(own);
+  for (int c = 0; c < own.cols(); ++c) {
+    panel.topRows(k).transpose().triangularView<Eigen::Upper>().solveInPlace(
+        own.col(c));
+  }
 }
 
 // How far one thread of Solve() has got, for the other to wait on.

@@ -40,11 +40,12 @@
 // mostly in the ordering and in its column-by-column numeric phase.
 //
 // Deterministic: the same pattern, coordinates and values give the same
-// factor on one build and, with the portable dense kernels (the default),
-// on every CPU with the same cache sizes: Eigen sizes its blocks from the
-// cache sizes it reads from the CPU, which changes the rounding (an L1 of
-// 16 KB or 48 KB instead of 32 KB gave other bits). Not bit-identical
-// across compilers.
+// factor and solutions on one build and, with the portable dense kernels
+// (the default), on every CPU of the build's architecture. Eigen would size
+// its matrix kernels' blocks from the cache sizes it reads from the CPU,
+// which changes the rounding (an L1 of 16 KB or 48 KB instead of 32 KB gave
+// other bits), so the dense kernels use fixed sizes (uv_dense_front.h) and
+// Solve() only Eigen's vector kernels. Not bit-identical across compilers.
 #ifndef DRACO_EXT_UV_SPARSE_CHOLESKY_H_
 #define DRACO_EXT_UV_SPARSE_CHOLESKY_H_
 

@@ -21,6 +21,7 @@
 #include <Eigen/Core>
 
 #include "gtest/gtest.h"
+#include "tests/scoped_eigen_cache_sizes.h"
 
 namespace draco {
 namespace {
@@ -120,6 +121,29 @@ TEST(UvDenseFrontTest, SplitFrontsDoNotDependOnHowTheHalvesRun) {
       EXPECT_EQ(f.update, expected.update);
     }
   }
+}
+
+// Eigen sizes its blocks, and so orders its sums, by the cache sizes it reads
+// from the CPU; the dense kernels use fixed ones, so that a front factorises
+// the same on every CPU with their instruction set.
+TEST(UvDenseFrontTest, FactorsTheSameWhateverTheCpusCacheSizes) {
+  const int k = 600, r = 400;
+  const Eigen::MatrixXd front = MakeFront(k + r);
+  for (const UvDenseKernels kernels :
+       {UvDenseKernels::kPortable, UvDenseKernels::kFastestHere}) {
+    const FactoredFront expected = Factor(kernels, front, k, nullptr);
+    const ScopedEigenCacheSizes other_cpu;
+    const FactoredFront f = Factor(kernels, front, k, nullptr);
+    EXPECT_EQ(f.panel, expected.panel);
+    EXPECT_EQ(f.update, expected.update);
+  }
+  // The control: Eigen's own product of the front's panels rounds
+  // differently with those cache sizes.
+  const Eigen::MatrixXd l = front.leftCols(k);
+  const Eigen::MatrixXd product = l.transpose() * l;
+  const ScopedEigenCacheSizes other_cpu;
+  const Eigen::MatrixXd other_product = l.transpose() * l;
+  EXPECT_FALSE((other_product.array() == product.array()).all());
 }
 
 }  // namespace

@@ -20,6 +20,7 @@
 #include <Eigen/SparseCore>
 
 #include "gtest/gtest.h"
+#include "tests/scoped_eigen_cache_sizes.h"
 
 namespace draco {
 namespace {
@@ -220,6 +221,28 @@ TEST(UvSparseCholeskyTest, FastestDenseKernelsSolveAsWellAndDeterministically) {
     } else {
       EXPECT_TRUE((b.array() == first.array()).all());
     }
+  }
+}
+
+// The factor and the solution do not depend on the cache sizes by which Eigen
+// blocks its matrix kernels (uv_dense_front_impl.h, Solve()), so that an
+// encoder picks the same anchors on every CPU with its instruction set.
+TEST(UvSparseCholeskyTest, SolvesTheSameWhateverTheCpusCacheSizes) {
+  const GridSystem s = MakeGridNormalSystem(150);
+  const Eigen::MatrixXd rhs = Eigen::MatrixXd::Random(s.matrix.size, 2);
+  for (const UvDenseKernels kernels :
+       {UvDenseKernels::kPortable, UvDenseKernels::kFastestHere}) {
+    UvSparseCholesky cholesky;
+    cholesky.set_dense_kernels(kernels);
+    ASSERT_TRUE(cholesky.Analyze(s.graph, int64_t{1} << 26));
+    ASSERT_TRUE(cholesky.Factorize(s.matrix));
+    Eigen::MatrixXd expected = rhs;
+    cholesky.Solve(expected);
+    const ScopedEigenCacheSizes other_cpu;
+    ASSERT_TRUE(cholesky.Factorize(s.matrix));
+    Eigen::MatrixXd x = rhs;
+    cholesky.Solve(x);
+    EXPECT_TRUE((x.array() == expected.array()).all());
   }
 }
 
