@@ -23,6 +23,12 @@
 
 #include "draco_ext/uv_dense_front.h"
 
+// UseFixedCacheSizes() below must not change the cache sizes of the
+// application's Eigen.
+#ifndef Eigen
+#error "Rename Eigen (#define Eigen DracoUvEigen...) before including it."
+#endif
+
 namespace draco {
 namespace {
 
