@@ -27,7 +27,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <string>
 #include <vector>
 
@@ -73,12 +72,9 @@ bool ParseArgs(int argc, char **argv, Args *args) {
         return false;
       }
     } else if (flag == "--rounds" && has_value) {
-      char *end = nullptr;
-      const long rounds = std::strtol(argv[++i], &end, 10);
-      if (*end != '\0' || rounds < 1 || rounds > 100000) {
+      if (!draco::ParseUvToolInt(argv[++i], 1, 100000, &args->rounds)) {
         return false;
       }
-      args->rounds = static_cast<int>(rounds);
     } else if (flag == "--schemes" && has_value) {
       args->schemes = draco::SplitUvToolList(argv[++i]);
     } else if (flag == "--threads" && has_value) {

@@ -37,15 +37,21 @@ inline std::vector<std::string> SplitUvToolList(const std::string &list) {
   return items;
 }
 
-// A quantization or compression setting: an integer from 0 to 30.
-inline bool ParseUvToolSetting(const std::string &text, int *value) {
+// A decimal integer from |min| to |max|.
+inline bool ParseUvToolInt(const std::string &text, int min, int max,
+                           int *value) {
   char *end = nullptr;
   const long parsed = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || parsed < 0 || parsed > 30) {
+  if (text.empty() || *end != '\0' || parsed < min || parsed > max) {
     return false;
   }
   *value = static_cast<int>(parsed);
   return true;
+}
+
+// A quantization or compression setting: an integer from 0 to 30.
+inline bool ParseUvToolSetting(const std::string &text, int *value) {
+  return ParseUvToolInt(text, 0, 30, value);
 }
 
 // The exit code after printing the usage: 0 when it was asked for (-h or
