@@ -15,9 +15,9 @@
 #                files testdata/golden/*.NAME.drc (and reading the crash
 #                regressions of testdata/fuzz/decode/), so every scheme and
 #                variant gets its own corpus;
-#   decode:laplacian  draco_uv_decode_fuzzer seeded with
-#                testdata/fuzz/laplacian_seeds/ (the lossy Laplacian schemes
-#                have no golden files: their decoded floats may differ
+#   decode:laplacian  draco_uv_decode_fuzzer seeded with the lossy
+#                Laplacian schemes' golden files testdata/golden/lossy/
+#                (encoder output only: their decoded floats may differ
 #                between builds);
 #   roundtrip    draco_uv_roundtrip_fuzzer: encode -> decode of generated
 #                degenerate meshes with every -uv_pred name.
@@ -141,7 +141,7 @@ run_all() {
       "${seeds}" testdata/fuzz/decode || failures=$((failures + 1))
   done
   run_target decode:laplacian "${bin}/draco_uv_decode_fuzzer" "${seconds}" \
-    testdata/fuzz/laplacian_seeds testdata/fuzz/decode || failures=$((failures + 1))
+    testdata/golden/lossy testdata/fuzz/decode || failures=$((failures + 1))
   run_target roundtrip "${bin}/draco_uv_roundtrip_fuzzer" "${seconds}" \
     testdata/fuzz/roundtrip || failures=$((failures + 1))
   echo "fuzz targets with crashes: ${failures}"

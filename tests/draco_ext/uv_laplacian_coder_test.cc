@@ -693,14 +693,18 @@ TEST(UvLaplacianSchemeTest, CorruptFilesFailOrDecodeFiniteUvs) {
   EXPECT_GT(rejected, 0);
 }
 
-// scripts/fuzz.sh seeds its decode:laplacian target with these files; a
-// format change must renew them (testdata/fuzz/README.md).
-TEST(UvLaplacianSchemeTest, FuzzSeedsDecode) {
+// The lossy golden files pin the encoder's bytes (scripts/make-golden.sh
+// --check-encode) and seed scripts/fuzz.sh's decode:laplacian target; a
+// format change must renew them, and they must decode.
+TEST(UvLaplacianSchemeTest, LossyGoldenFilesDecode) {
   namespace fs = std::filesystem;
-  const fs::path folder = UvTestdataPath("fuzz/laplacian_seeds");
+  const fs::path folder = UvTestdataPath("golden/lossy");
   ASSERT_TRUE(fs::is_directory(folder)) << folder;
   int seeds = 0;
   for (const auto &entry : fs::directory_iterator(folder)) {
+    if (entry.path().extension() != ".drc") {
+      continue;
+    }
     std::ifstream stream(entry.path(), std::ios::binary);
     const std::vector<char> bytes((std::istreambuf_iterator<char>(stream)),
                                   std::istreambuf_iterator<char>());

@@ -14,8 +14,8 @@
 //
 // The decoder treats its input as hostile: every golden file
 // (testdata/golden/, one per mesh and row of variants.tsv, so new schemes
-// are covered by adding a row; the lossy Laplacian schemes by their fuzz
-// seeds, testdata/fuzz/laplacian_seeds/) truncated at every byte, with bits
+// are covered by adding a row; the lossy Laplacian schemes by theirs,
+// testdata/golden/lossy/) truncated at every byte, with bits
 // flipped, with the draco-uv header fields and the prediction scheme id
 // replaced by unknown values and with huge counts either decodes or fails with
 // a message; it never crashes, hangs or allocates without bound. The sanitizer
@@ -69,11 +69,11 @@ std::vector<GoldenFile> DrcFilesIn(const std::string &folder) {
 
 std::vector<GoldenFile> GoldenFiles() { return DrcFilesIn("golden"); }
 
-// The golden files and the Laplacian schemes' fuzz seeds (lossy, so they
-// have no golden files), for the layout-free tests.
+// The golden files of the exact and of the lossy (Laplacian) schemes, for
+// the layout-free tests.
 std::vector<GoldenFile> GoldenAndLaplacianFiles() {
   std::vector<GoldenFile> files = GoldenFiles();
-  for (GoldenFile &file : DrcFilesIn("fuzz/laplacian_seeds")) {
+  for (GoldenFile &file : DrcFilesIn("golden/lossy")) {
     files.push_back(std::move(file));
   }
   return files;
