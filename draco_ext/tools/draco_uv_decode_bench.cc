@@ -81,7 +81,7 @@ bool ParseArgs(int argc, char **argv, Args *args) {
       args->threads.clear();
       for (const std::string &item : draco::SplitUvToolList(argv[++i])) {
         int threads = 0;
-        if (!draco::ParseUvToolSetting(item, &threads) || threads < 1) {
+        if (!draco::ParseUvToolInt(item, 1, 30, &threads)) {
           return false;
         }
         args->threads.push_back(threads);

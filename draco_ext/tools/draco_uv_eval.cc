@@ -80,7 +80,7 @@ bool ParseArgs(int argc, char **argv, Args *args) {
       args->options.qt.clear();
       for (const std::string &item : draco::SplitUvToolList(argv[++i])) {
         int qt;
-        if (!draco::ParseUvToolSetting(item, &qt) || qt == 0) {
+        if (!draco::ParseUvToolInt(item, 1, 30, &qt)) {
           fprintf(stderr, "Error: bad --qt value '%s'.\n", item.c_str());
           return false;
         }
