@@ -64,7 +64,8 @@ encode_all() {  # encode_all VARIANTS_DIR OUT_DIR
 }
 
 # Re-encodes the golden files of VARIANTS_DIR into WORK_DIR and compares
-# them; prints failures, returns their count in check_failures.
+# them with the committed ones; prints each failure and adds to the counts
+# check_count and check_failures.
 check_encoded() {  # check_encoded VARIANTS_DIR WORK_DIR
   local file
   encode_all "$1" "$2"
