@@ -90,34 +90,6 @@ if(CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64|amd64)$"
   set(DRACO_UV_DENSE_FRONT_AVX2 ON CACHE INTERNAL "")
 endif()
 
-# The Laplacian encoder picks anchors by comparing float reconstruction
-# errors, so its files depend on how its sums round: its sources (they also
-# decode) are compiled without contracting products into fused multiply-adds
-# and, on x86-64, without FMA, AVX or AVX2 instructions whatever the flags
-# (Eigen would use them and block its kernels by their width), so that every
-# x86-64 build writes the same files (scripts/check-determinism.sh). The
-# decoder's AVX2 kernels above keep their own flags.
-set(draco_uv_laplacian_encode_sources
-    "${draco_uv_ext}/uv_laplacian_coder.cc"
-    "${draco_uv_ext}/uv_laplacian_operator.cc"
-    "${draco_uv_ext}/uv_laplacian_system.cc"
-    "${draco_uv_ext}/uv_sparse_cholesky.cc"
-    "${draco_uv_ext}/uv_dense_front.cc"
-    "${draco_uv_ext}/uv_dense_front_portable.cc")
-set(draco_uv_laplacian_options "")
-check_cxx_compiler_flag("-ffp-contract=off" DRACO_UV_COMPILER_HAS_FP_CONTRACT)
-if(DRACO_UV_COMPILER_HAS_FP_CONTRACT)
-  list(APPEND draco_uv_laplacian_options "-ffp-contract=off")
-endif()
-check_cxx_compiler_flag("-mno-fma -mno-avx2 -mno-avx" DRACO_UV_COMPILER_HAS_NO_AVX)
-if(CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64|amd64)$"
-   AND DRACO_UV_COMPILER_HAS_NO_AVX)
-  list(APPEND draco_uv_laplacian_options "-mno-fma;-mno-avx2;-mno-avx")
-endif()
-set_source_files_properties(${draco_uv_laplacian_encode_sources}
-                            PROPERTIES COMPILE_OPTIONS
-                                       "${draco_uv_laplacian_options}")
-
 list(
   APPEND draco_compression_encode_sources
          "${draco_uv_ext}/uv_compression_options.cc"
