@@ -17,8 +17,12 @@
 #      (scripts/make-golden.sh --check-encode), in builds with FMA
 #      contraction only those of the exact schemes (--check-encode-exact):
 #      the lossy Laplacian coder picks its anchors by comparing float
-#      reconstruction errors, which contracted products change, so a near
-#      tie can go the other way (2 of its 12 golden files on 2026-12-02).
+#      reconstruction errors, which contracted products and Eigen's FMA
+#      kernels change, so a near tie can go the other way (2 of its 12
+#      golden files on 2026-12-02). Compiling just the Laplacian sources
+#      without FMA and AVX in such a build is no way out: they share
+#      Eigen's inline functions with the rest of the program, which then
+#      disagree on alignment (a -march=native decoder crashed).
 # Dequantization (q * delta + min) is stock Draco's float arithmetic: with
 # -mfma -ffp-contract=fast it becomes a fused multiply-add and the last bit
 # of the floats changes, for stock files as much as for draco-uv's. Every
