@@ -377,16 +377,19 @@ TEST(UvLaplacianCoderTest, ErrorFallsAsTheStepShrinks) {
 }
 
 TEST(UvLaplacianCoderTest, DecoderReproducesTheEncodersReconstruction) {
-  for (const UvTestCase &c : TestdataCases()) {
-    EncoderBuffer buffer;
-    UvValues expected;
-    ASSERT_TRUE(EncodeUvLaplacian(c.mesh, c.uv,
-                                  Options(UvLaplacianKind::kMeanValue, 10),
-                                  &buffer, &expected));
-    const UvValues decoded =
-        RoundTrip(c, Options(UvLaplacianKind::kMeanValue, 10));
-    ASSERT_EQ(decoded.rows(), expected.rows());
-    EXPECT_LT((decoded - expected).cwiseAbs().maxCoeff(), 1e-6) << c.name;
+  std::vector<UvTestCase> cases = TestdataCases();
+  cases.push_back(ManyChartsCase(30, 20));
+  for (const UvTestCase &c : cases) {
+    for (const UvLaplacianKind kind : kKinds) {
+      EncoderBuffer buffer;
+      UvValues expected;
+      ASSERT_TRUE(EncodeUvLaplacian(c.mesh, c.uv, Options(kind, 10), &buffer,
+                                    &expected));
+      const UvValues decoded = RoundTrip(c, Options(kind, 10));
+      ASSERT_EQ(decoded.rows(), expected.rows());
+      EXPECT_LT((decoded - expected).cwiseAbs().maxCoeff(), 1e-6)
+          << c.name << " kind " << static_cast<int>(kind);
+    }
   }
 }
 
