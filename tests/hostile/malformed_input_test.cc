@@ -29,6 +29,10 @@
 #include <string>
 #include <vector>
 
+#include "draco/compression/attributes/prediction_schemes/mesh_prediction_scheme_data.h"
+#include "draco/compression/attributes/prediction_schemes/mesh_prediction_scheme_tex_coords_portable_decoder.h"
+#include "draco/compression/attributes/prediction_schemes/prediction_scheme_wrap_decoding_transform.h"
+#include "draco/compression/bit_coders/rans_bit_encoder.h"
 #include "draco/compression/decode.h"
 #include "draco/io/file_utils.h"
 #include "draco_ext/uv_bitstream_guard.h"
@@ -284,6 +288,53 @@ TEST(MalformedInputTest, UnknownOrMismatchedPredictionIdsAreRejected) {
     tried += 2;
   }
   RecordProperty("prediction_ids", tried);
+}
+
+// The prediction data of Draco's MESH_PREDICTION_TEX_COORDS_PORTABLE for
+// one triangle: |num_orientations| orientation bits, then the wrap
+// transform's range.
+std::vector<char> PortablePredictionData(int32_t num_orientations) {
+  EncoderBuffer buffer;
+  buffer.Encode(num_orientations);
+  RAnsBitEncoder bits;
+  bits.StartEncoding();
+  for (int i = 0; i < num_orientations; ++i) {
+    bits.EncodeBit(i % 2 == 0);
+  }
+  bits.EndEncoding(&buffer);
+  buffer.Encode(int32_t{0});    // Wrap transform: min.
+  buffer.Encode(int32_t{100});  // Max.
+  return std::vector<char>(buffer.data(), buffer.data() + buffer.size());
+}
+
+TEST(MalformedInputTest, PortableOrientationCountAboveTheCornersIsRejected) {
+  // Patch 0019: stock Draco 1.5.5 decoded as many orientation bits as the
+  // count said (fuzzed 4.5 KB files took 12-22 s and 256 MB), and extra
+  // ones were read as if they belonged to the UVs.
+  IndexTypeVector<FaceIndex, CornerTable::FaceType> faces(1);
+  faces[FaceIndex(0)] = {VertexIndex(0), VertexIndex(1), VertexIndex(2)};
+  const std::unique_ptr<CornerTable> table = CornerTable::Create(faces);
+  ASSERT_NE(table, nullptr);
+  const std::vector<CornerIndex> data_to_corner = {
+      CornerIndex(0), CornerIndex(1), CornerIndex(2)};
+  const std::vector<int32_t> vertex_to_data = {0, 1, 2};
+  Mesh mesh;
+  MeshPredictionSchemeData<CornerTable> mesh_data;
+  mesh_data.Set(&mesh, table.get(), &data_to_corner, &vertex_to_data);
+  PointAttribute uv;
+  uv.Init(GeometryAttribute::TEX_COORD, 2, DT_INT32, false, 3);
+  for (const int32_t count : {3, 4, 1 << 20}) {
+    MeshPredictionSchemeTexCoordsPortableDecoder<
+        int32_t, PredictionSchemeWrapDecodingTransform<int32_t>,
+        MeshPredictionSchemeData<CornerTable>>
+        scheme(&uv, PredictionSchemeWrapDecodingTransform<int32_t>(),
+               mesh_data);
+    const std::vector<char> data = PortablePredictionData(count);
+    DecoderBuffer buffer;
+    buffer.Init(data.data(), data.size());
+    buffer.set_bitstream_version(kDracoMeshBitstreamVersion);
+    EXPECT_EQ(scheme.DecodePredictionData(&buffer), count <= 3) << count;
+  }
 }
 
 }  // namespace
