@@ -30,10 +30,12 @@
 #include <vector>
 
 #include "draco/compression/attributes/prediction_schemes/mesh_prediction_scheme_data.h"
+#include "draco/compression/attributes/prediction_schemes/mesh_prediction_scheme_tex_coords_decoder.h"
 #include "draco/compression/attributes/prediction_schemes/mesh_prediction_scheme_tex_coords_portable_decoder.h"
 #include "draco/compression/attributes/prediction_schemes/prediction_scheme_wrap_decoding_transform.h"
 #include "draco/compression/bit_coders/rans_bit_encoder.h"
 #include "draco/compression/decode.h"
+#include "draco/core/varint_encoding.h"
 #include "draco/io/file_utils.h"
 #include "draco_ext/uv_bitstream_guard.h"
 #include "gtest/gtest.h"
@@ -290,12 +292,18 @@ TEST(MalformedInputTest, UnknownOrMismatchedPredictionIdsAreRejected) {
   RecordProperty("prediction_ids", tried);
 }
 
-// The prediction data of Draco's MESH_PREDICTION_TEX_COORDS_PORTABLE for
-// one triangle: |num_orientations| orientation bits, then the wrap
-// transform's range.
-std::vector<char> PortablePredictionData(int32_t num_orientations) {
+// The prediction data of Draco's texture coordinate schemes for one
+// triangle: |num_orientations| orientation bits (the count as int32 for
+// MESH_PREDICTION_TEX_COORDS_PORTABLE, as a varint for the deprecated
+// MESH_PREDICTION_TEX_COORDS), then the wrap transform's range.
+std::vector<char> TexCoordsPredictionData(int32_t num_orientations,
+                                          bool varint_count) {
   EncoderBuffer buffer;
-  buffer.Encode(num_orientations);
+  if (varint_count) {
+    EncodeVarint(static_cast<uint32_t>(num_orientations), &buffer);
+  } else {
+    buffer.Encode(num_orientations);
+  }
   RAnsBitEncoder bits;
   bits.StartEncoding();
   for (int i = 0; i < num_orientations; ++i) {
@@ -307,7 +315,7 @@ std::vector<char> PortablePredictionData(int32_t num_orientations) {
   return std::vector<char>(buffer.data(), buffer.data() + buffer.size());
 }
 
-TEST(MalformedInputTest, PortableOrientationCountAboveTheCornersIsRejected) {
+TEST(MalformedInputTest, OrientationCountsAboveTheCornersAreRejected) {
   // Patch 0019: stock Draco 1.5.5 decoded as many orientation bits as the
   // count said (fuzzed 4.5 KB files took 12-22 s and 256 MB), and extra
   // ones were read as if they belonged to the UVs.
@@ -319,21 +327,31 @@ TEST(MalformedInputTest, PortableOrientationCountAboveTheCornersIsRejected) {
       CornerIndex(0), CornerIndex(1), CornerIndex(2)};
   const std::vector<int32_t> vertex_to_data = {0, 1, 2};
   Mesh mesh;
-  MeshPredictionSchemeData<CornerTable> mesh_data;
+  typedef MeshPredictionSchemeData<CornerTable> MeshData;
+  typedef PredictionSchemeWrapDecodingTransform<int32_t> Transform;
+  MeshData mesh_data;
   mesh_data.Set(&mesh, table.get(), &data_to_corner, &vertex_to_data);
   PointAttribute uv;
   uv.Init(GeometryAttribute::TEX_COORD, 2, DT_INT32, false, 3);
-  for (const int32_t count : {3, 4, 1 << 20}) {
-    MeshPredictionSchemeTexCoordsPortableDecoder<
-        int32_t, PredictionSchemeWrapDecodingTransform<int32_t>,
-        MeshPredictionSchemeData<CornerTable>>
-        scheme(&uv, PredictionSchemeWrapDecodingTransform<int32_t>(),
-               mesh_data);
-    const std::vector<char> data = PortablePredictionData(count);
-    DecoderBuffer buffer;
-    buffer.Init(data.data(), data.size());
-    buffer.set_bitstream_version(kDracoMeshBitstreamVersion);
-    EXPECT_EQ(scheme.DecodePredictionData(&buffer), count <= 3) << count;
+  for (const bool deprecated : {false, true}) {
+    for (const int32_t count : {3, 4, 1 << 20}) {
+      std::unique_ptr<PredictionSchemeDecoder<int32_t, Transform>> scheme;
+      if (deprecated) {
+        scheme.reset(new MeshPredictionSchemeTexCoordsDecoder<
+                     int32_t, Transform, MeshData>(
+            &uv, Transform(), mesh_data, kDracoMeshBitstreamVersion));
+      } else {
+        scheme.reset(new MeshPredictionSchemeTexCoordsPortableDecoder<
+                     int32_t, Transform, MeshData>(&uv, Transform(),
+                                                   mesh_data));
+      }
+      const std::vector<char> data = TexCoordsPredictionData(count, deprecated);
+      DecoderBuffer buffer;
+      buffer.Init(data.data(), data.size());
+      buffer.set_bitstream_version(kDracoMeshBitstreamVersion);
+      EXPECT_EQ(scheme->DecodePredictionData(&buffer), count <= 3)
+          << (deprecated ? "deprecated " : "portable ") << count;
+    }
   }
 }
 
