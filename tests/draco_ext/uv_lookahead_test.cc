@@ -14,7 +14,10 @@
 #include "draco_ext/uv_lookahead.h"
 
 #include <atomic>
+#include <chrono>
+#include <condition_variable>
 #include <cstdint>
+#include <mutex>
 #include <thread>
 
 #include "gtest/gtest.h"
@@ -64,13 +67,38 @@ TEST(UvLookaheadTest, NeverWaitsForAStalledThread) {
                                   }
                                   ComputeItems(begin, end, out);
                                 });
+    // If Get() waited for the stalled thread, the loop below would never
+    // end; the watchdog then releases the thread, so the test fails instead
+    // of hanging.
+    std::mutex mutex;
+    std::condition_variable done_signal;
+    bool done = false;
+    bool watchdog_fired = false;
+    std::thread watchdog([&] {
+      std::unique_lock<std::mutex> lock(mutex);
+      if (!done_signal.wait_for(lock, std::chrono::seconds(60),
+                                [&] { return done; })) {
+        watchdog_fired = true;
+        consumed = true;
+      }
+    });
     // Let the thread claim a chunk (if it runs at all) before consuming.
     for (int spins = 0; spins < 1000000 && !thread_started; ++spins) {
       std::this_thread::yield();
     }
-    for (int i = 0; i < n; ++i) {
-      ASSERT_EQ(items.Get(i), ItemValue(i)) << i;
+    bool values_match = true;
+    for (int i = 0; i < n && values_match; ++i) {
+      values_match = items.Get(i) == ItemValue(i);
+      EXPECT_TRUE(values_match) << i;
     }
+    {
+      std::lock_guard<std::mutex> lock(mutex);
+      done = true;
+      EXPECT_FALSE(watchdog_fired)
+          << "Get() waited 60 s for a stalled lookahead thread";
+    }
+    done_signal.notify_one();
+    watchdog.join();
     consumed = true;
   }
 }
