@@ -5,7 +5,6 @@
 # unit tests all build with the extension.
 
 get_filename_component(draco_uv_root "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
-set(draco_uv_schemes "${draco_uv_root}/prediction_schemes")
 set(draco_uv_ext "${draco_uv_root}/draco_ext")
 
 list(APPEND draco_include_paths "${draco_uv_root}")
@@ -21,58 +20,58 @@ endif()
 
 list(
   APPEND draco_compression_attributes_pred_schemes_dec_sources
-         "${draco_uv_ext}/uv_bitstream_guard.h"
-         "${draco_uv_ext}/uv_fixed_point.h"
-         "${draco_uv_ext}/uv_lookahead.h"
-         "${draco_uv_ext}/uv_processing_order.h"
-         "${draco_uv_schemes}/mesh_prediction_scheme_tex_coords_laplacian_decoder.h"
-         "${draco_uv_schemes}/mesh_prediction_scheme_tex_coords_laplacian_shared.h"
-         "${draco_uv_schemes}/mesh_prediction_scheme_tex_coords_weighted_decoder.h"
-         "${draco_uv_schemes}/mesh_prediction_scheme_tex_coords_weighted_predictor.h"
-         "${draco_uv_schemes}/mesh_prediction_scheme_tex_coords_weighted_shared.h"
-         "${draco_uv_schemes}/uv_stencil_geometry.h")
+         "${draco_uv_ext}/common/uv_bitstream_guard.h"
+         "${draco_uv_ext}/common/fixed_point.h"
+         "${draco_uv_ext}/weighted/uv_lookahead.h"
+         "${draco_uv_ext}/weighted/uv_processing_order.h"
+         "${draco_uv_ext}/laplacian/mesh_prediction_scheme_tex_coords_laplacian_decoder.h"
+         "${draco_uv_ext}/laplacian/mesh_prediction_scheme_tex_coords_laplacian_shared.h"
+         "${draco_uv_ext}/weighted/mesh_prediction_scheme_tex_coords_weighted_decoder.h"
+         "${draco_uv_ext}/weighted/mesh_prediction_scheme_tex_coords_weighted_predictor.h"
+         "${draco_uv_ext}/weighted/mesh_prediction_scheme_tex_coords_weighted_shared.h"
+         "${draco_uv_ext}/weighted/uv_stencil_geometry.h")
 
 list(
   APPEND draco_compression_attributes_pred_schemes_enc_sources
-         "${draco_uv_schemes}/mesh_prediction_scheme_tex_coords_laplacian_encoder.h"
-         "${draco_uv_schemes}/mesh_prediction_scheme_tex_coords_weighted_encoder.h")
+         "${draco_uv_ext}/laplacian/mesh_prediction_scheme_tex_coords_laplacian_encoder.h"
+         "${draco_uv_ext}/weighted/mesh_prediction_scheme_tex_coords_weighted_encoder.h")
 
 # Object libraries with Draco's include paths (the prediction scheme lists
 # above are header-only and compiled without them).
 list(
   APPEND draco_compression_decode_sources
-         "${draco_uv_ext}/uv_residual_coder.cc"
-         "${draco_uv_ext}/uv_residual_coder.h"
-         "${draco_uv_ext}/uv_seam_bit_model.cc"
-         "${draco_uv_ext}/uv_seam_bit_model.h"
-         "${draco_uv_ext}/mesh_edgebreaker_traversal_uv_seam_decoder.h"
-         "${draco_uv_ext}/uv_seam_coder.cc"
-         "${draco_uv_ext}/uv_seam_coder.h"
-         "${draco_uv_ext}/uv_seam_edgebreaker.cc"
-         "${draco_uv_ext}/uv_seam_edgebreaker.h"
-         "${draco_uv_ext}/uv_seam_range_coder.cc"
-         "${draco_uv_ext}/uv_seam_range_coder.h"
-         "${draco_uv_ext}/uv_seam_topology.cc"
-         "${draco_uv_ext}/uv_seam_topology.h")
+         "${draco_uv_ext}/common/uv_residual_coder.cc"
+         "${draco_uv_ext}/common/uv_residual_coder.h"
+         "${draco_uv_ext}/seams/uv_seam_bit_model.cc"
+         "${draco_uv_ext}/seams/uv_seam_bit_model.h"
+         "${draco_uv_ext}/seams/mesh_edgebreaker_traversal_uv_seam_decoder.h"
+         "${draco_uv_ext}/seams/uv_seam_coder.cc"
+         "${draco_uv_ext}/seams/uv_seam_coder.h"
+         "${draco_uv_ext}/seams/uv_seam_edgebreaker.cc"
+         "${draco_uv_ext}/seams/uv_seam_edgebreaker.h"
+         "${draco_uv_ext}/seams/uv_seam_range_coder.cc"
+         "${draco_uv_ext}/seams/uv_seam_range_coder.h"
+         "${draco_uv_ext}/seams/uv_seam_topology.cc"
+         "${draco_uv_ext}/seams/uv_seam_topology.h")
 
 # The Laplacian texture coordinate coder (encoder and decoder).
 list(
   APPEND draco_compression_decode_sources
-         "${draco_uv_ext}/uv_laplacian_coder.cc"
-         "${draco_uv_ext}/uv_laplacian_coder.h"
-         "${draco_uv_ext}/uv_laplacian_operator.cc"
-         "${draco_uv_ext}/uv_laplacian_operator.h"
-         "${draco_uv_ext}/uv_laplacian_system.cc"
-         "${draco_uv_ext}/uv_laplacian_system.h"
-         "${draco_uv_ext}/uv_sparse_cholesky.cc"
-         "${draco_uv_ext}/uv_sparse_cholesky.h"
-         "${draco_uv_ext}/uv_dense_front.cc"
-         "${draco_uv_ext}/uv_dense_front.h"
-         "${draco_uv_ext}/uv_dense_front_impl.h"
-         "${draco_uv_ext}/uv_dense_front_portable.cc")
+         "${draco_uv_ext}/laplacian/uv_laplacian_coder.cc"
+         "${draco_uv_ext}/laplacian/uv_laplacian_coder.h"
+         "${draco_uv_ext}/laplacian/uv_laplacian_operator.cc"
+         "${draco_uv_ext}/laplacian/uv_laplacian_operator.h"
+         "${draco_uv_ext}/laplacian/uv_laplacian_system.cc"
+         "${draco_uv_ext}/laplacian/uv_laplacian_system.h"
+         "${draco_uv_ext}/linalg/sparse_cholesky.cc"
+         "${draco_uv_ext}/linalg/sparse_cholesky.h"
+         "${draco_uv_ext}/linalg/dense_front.cc"
+         "${draco_uv_ext}/linalg/dense_front.h"
+         "${draco_uv_ext}/linalg/dense_front_impl.h"
+         "${draco_uv_ext}/linalg/dense_front_portable.cc")
 
 # On x86-64, the Laplacian decoder's dense kernels also in an AVX2 and FMA
-# build, chosen at run time on CPUs that have both (uv_dense_front.h).
+# build, chosen at run time on CPUs that have both (dense_front.h).
 include(CheckCXXCompilerFlag)
 check_cxx_compiler_flag("-mavx2 -mfma" DRACO_UV_COMPILER_HAS_AVX2_FMA)
 # Seen by tests/CMakeLists.txt, outside Draco's directory scope.
@@ -81,10 +80,10 @@ if(CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64|amd64)$"
    AND CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang"
    AND DRACO_UV_COMPILER_HAS_AVX2_FMA)
   list(APPEND draco_compression_decode_sources
-       "${draco_uv_ext}/uv_dense_front_avx2.cc")
-  set_source_files_properties("${draco_uv_ext}/uv_dense_front_avx2.cc"
+       "${draco_uv_ext}/linalg/dense_front_avx2.cc")
+  set_source_files_properties("${draco_uv_ext}/linalg/dense_front_avx2.cc"
                               PROPERTIES COMPILE_OPTIONS "-mavx2;-mfma")
-  set_source_files_properties("${draco_uv_ext}/uv_dense_front.cc"
+  set_source_files_properties("${draco_uv_ext}/linalg/dense_front.cc"
                               PROPERTIES COMPILE_DEFINITIONS
                                          DRACO_UV_DENSE_FRONT_AVX2)
   set(DRACO_UV_DENSE_FRONT_AVX2 ON CACHE INTERNAL "")
@@ -92,18 +91,18 @@ endif()
 
 list(
   APPEND draco_compression_encode_sources
-         "${draco_uv_ext}/uv_compression_options.cc"
-         "${draco_uv_ext}/uv_compression_options.h"
-         "${draco_uv_ext}/uv_encode_settings.cc"
-         "${draco_uv_ext}/uv_encode_settings.h"
-         "${draco_uv_ext}/uv_gltf.cc"
-         "${draco_uv_ext}/uv_gltf.h"
-         "${draco_uv_ext}/uv_gltf_extension.h"
-         "${draco_uv_ext}/uv_laplacian_options.cc"
-         "${draco_uv_ext}/uv_laplacian_options.h"
-         "${draco_uv_ext}/uv_prediction_options.cc"
-         "${draco_uv_ext}/uv_prediction_options.h"
-         "${draco_uv_ext}/mesh_edgebreaker_traversal_uv_seam_encoder.h"
-         "${draco_uv_ext}/uv_seam_edgebreaker_encoder.cc"
-         "${draco_uv_ext}/uv_seam_options.cc"
-         "${draco_uv_ext}/uv_seam_options.h")
+         "${draco_uv_ext}/options/uv_compression_options.cc"
+         "${draco_uv_ext}/options/uv_compression_options.h"
+         "${draco_uv_ext}/options/uv_encode_settings.cc"
+         "${draco_uv_ext}/options/uv_encode_settings.h"
+         "${draco_uv_ext}/gltf/uv_gltf.cc"
+         "${draco_uv_ext}/gltf/uv_gltf.h"
+         "${draco_uv_ext}/gltf/uv_gltf_extension.h"
+         "${draco_uv_ext}/options/uv_laplacian_options.cc"
+         "${draco_uv_ext}/options/uv_laplacian_options.h"
+         "${draco_uv_ext}/options/uv_prediction_options.cc"
+         "${draco_uv_ext}/options/uv_prediction_options.h"
+         "${draco_uv_ext}/seams/mesh_edgebreaker_traversal_uv_seam_encoder.h"
+         "${draco_uv_ext}/seams/uv_seam_edgebreaker_encoder.cc"
+         "${draco_uv_ext}/options/uv_seam_options.cc"
+         "${draco_uv_ext}/options/uv_seam_options.h")

@@ -23,7 +23,7 @@
 
 #include "draco/core/status_or.h"
 #include "draco/mesh/mesh.h"
-#include "draco_ext/uv_encode_settings.h"
+#include "draco_ext/options/uv_encode_settings.h"
 
 namespace draco {
 

@@ -30,7 +30,7 @@
 
 #include "draco/compression/decode.h"
 #include "draco/mesh/triangle_soup_mesh_builder.h"
-#include "draco_ext/uv_encode_settings.h"
+#include "draco_ext/options/uv_encode_settings.h"
 
 namespace draco {
 

@@ -33,9 +33,9 @@
 #include "draco/compression/decode.h"
 #include "draco/io/mesh_io.h"
 #include "draco_ext/tools/uv_tool_args.h"
-#include "draco_ext/uv_encode_settings.h"
-#include "draco_ext/uv_eval.h"
-#include "draco_ext/uv_lookahead.h"
+#include "draco_ext/options/uv_encode_settings.h"
+#include "draco_ext/eval/uv_eval.h"
+#include "draco_ext/weighted/uv_lookahead.h"
 
 namespace {
 

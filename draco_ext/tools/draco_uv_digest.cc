@@ -22,7 +22,7 @@
 #include <vector>
 
 #include "draco/io/file_utils.h"
-#include "draco_ext/uv_decoded_digest.h"
+#include "draco_ext/eval/uv_decoded_digest.h"
 
 int main(int argc, char **argv) {
   bool quantized = true;

@@ -24,8 +24,8 @@
 
 #include "draco/io/mesh_io.h"
 #include "draco_ext/tools/uv_tool_args.h"
-#include "draco_ext/uv_eval.h"
-#include "draco_ext/uv_eval_report.h"
+#include "draco_ext/eval/uv_eval.h"
+#include "draco_ext/eval/uv_eval_report.h"
 
 namespace {
 

@@ -25,7 +25,7 @@
 #include <vector>
 
 #include "draco_ext/tools/uv_tool_args.h"
-#include "draco_ext/uv_gltf_eval.h"
+#include "draco_ext/eval/uv_gltf_eval.h"
 
 namespace {
 

@@ -16,7 +16,7 @@
 // numbers. For every mesh, the bytes and bits per vertex that texture
 // connectivity (the seams of every non-position attribute) costs as
 // per-edge bits, per-vertex flags, stock Draco and draco-uv's
-// -uv_seams context (see draco_ext/uv_seam_stats.h).
+// -uv_seams context (see draco_ext/eval/uv_seam_stats.h).
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -25,8 +25,8 @@
 
 #include "draco/io/mesh_io.h"
 #include "draco_ext/tools/uv_tool_args.h"
-#include "draco_ext/uv_eval.h"
-#include "draco_ext/uv_seam_stats.h"
+#include "draco_ext/eval/uv_eval.h"
+#include "draco_ext/eval/uv_seam_stats.h"
 
 namespace {
 

@@ -23,7 +23,7 @@
 #include <cstdint>
 
 #include "draco/compression/decode.h"
-#include "draco_ext/uv_decoded_digest.h"
+#include "draco_ext/eval/uv_decoded_digest.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   draco::DecoderBuffer buffer;

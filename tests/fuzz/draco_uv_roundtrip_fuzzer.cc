@@ -38,9 +38,9 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "draco_ext/uv_laplacian_options.h"
-#include "draco_ext/uv_prediction_options.h"
-#include "draco_ext/uv_seam_options.h"
+#include "draco_ext/options/uv_laplacian_options.h"
+#include "draco_ext/options/uv_prediction_options.h"
+#include "draco_ext/options/uv_seam_options.h"
 #include "tests/uv_soup_mesh.h"
 
 namespace {

@@ -37,9 +37,9 @@
 #include "draco/compression/decode.h"
 #include "draco/core/varint_encoding.h"
 #include "draco/io/file_utils.h"
-#include "draco_ext/uv_bitstream_guard.h"
+#include "draco_ext/common/uv_bitstream_guard.h"
 #include "gtest/gtest.h"
-#include "prediction_schemes/mesh_prediction_scheme_tex_coords_weighted_shared.h"
+#include "draco_ext/weighted/mesh_prediction_scheme_tex_coords_weighted_shared.h"
 #include "tests/draco_uv_test_utils.h"
 
 namespace draco {

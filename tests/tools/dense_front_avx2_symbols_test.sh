@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The AVX2 build of the dense front kernel (draco_ext/uv_dense_front_avx2.cc)
+# The AVX2 build of the dense front kernel (draco_ext/linalg/dense_front_avx2.cc)
 # shares no symbol with other objects but Eigen's, renamed: a weak symbol
 # (template or inline function) that other objects also define would let the
 # linker keep this object's AVX2 code for the whole program, which fails on
@@ -13,9 +13,9 @@ set -uo pipefail
 IFS=';' read -r -a files <<<"$*"
 object=
 for file in "${files[@]}"; do
-  [[ ${file} == *uv_dense_front_avx2.cc.o ]] && object=${file}
+  [[ ${file} == *dense_front_avx2.cc.o ]] && object=${file}
 done
-[[ -n ${object} ]] || { echo "FAIL: no uv_dense_front_avx2 object given"; exit 1; }
+[[ -n ${object} ]] || { echo "FAIL: no dense_front_avx2 object given"; exit 1; }
 
 # Weak (W, V) and unique (u) global definitions, mangled; the exception
 # personality reference is data, the same in every object.

@@ -1,0 +1,472 @@
+// Copyright 2026 The draco-uv Authors.
+//
+// Licensed under the Apache License, Version 2.0 (the "License");
+// you may not use this file except in compliance with the License.
+// You may obtain a copy of the License at
+//
+//      http://www.apache.org/licenses/LICENSE-2.0
+//
+// Unless required by applicable law or agreed to in writing, software
+// distributed under the License is distributed on an "AS IS" BASIS,
+// WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+// See the License for the specific language governing permissions and
+// limitations under the License.
+//
+#include "draco_ext/eval/uv_eval.h"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <map>
+#include <unordered_map>
+#include <unordered_set>
+
+#include "draco/compression/bit_coders/rans_bit_encoder.h"
+#include "draco/compression/decode.h"
+#include "draco/core/quantization_utils.h"
+#include "draco/mesh/mesh_attribute_corner_table.h"
+#include "draco/mesh/mesh_misc_functions.h"
+#include "draco_ext/options/uv_encode_settings.h"
+#include "draco_ext/options/uv_laplacian_options.h"
+#include "draco_ext/eval/uv_seam_stats.h"
+
+namespace draco {
+
+namespace {
+
+std::vector<const PointAttribute *> TexCoordAttributes(const Mesh &mesh) {
+  std::vector<const PointAttribute *> atts;
+  for (int i = 0; i < mesh.NumNamedAttributes(GeometryAttribute::TEX_COORD);
+       ++i) {
+    atts.push_back(mesh.GetNamedAttribute(GeometryAttribute::TEX_COORD, i));
+  }
+  return atts;
+}
+
+std::array<float, 2> UvAt(const PointAttribute &att, PointIndex point) {
+  std::array<float, 2> uv = {0.f, 0.f};
+  att.ConvertValue(att.mapped_index(point), 2, uv.data());
+  return uv;
+}
+
+// The mesh without its texture coordinates, as draco_encoder's
+// --skip TEX_COORD makes it.
+std::unique_ptr<Mesh> WithoutTexCoords(const Mesh &mesh) {
+  std::unique_ptr<Mesh> copy(new Mesh());
+  copy->Copy(mesh);
+  while (copy->NumNamedAttributes(GeometryAttribute::TEX_COORD) > 0) {
+    copy->DeleteAttribute(
+        copy->GetNamedAttributeId(GeometryAttribute::TEX_COORD, 0));
+  }
+#ifdef DRACO_ATTRIBUTE_INDICES_DEDUPLICATION_SUPPORTED
+  copy->DeduplicatePointIds();
+#endif
+  return copy;
+}
+
+double MillisecondsSince(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(
+             std::chrono::steady_clock::now() - start)
+      .count();
+}
+
+struct TimedEncoding {
+  EncoderBuffer buffer;
+  std::string summary;
+  double ms = std::numeric_limits<double>::max();
+};
+
+Status EncodeTimed(const Mesh &mesh, const UvEncodeSettings &settings,
+                   int repeat, TimedEncoding *out) {
+  for (int i = 0; i < std::max(1, repeat); ++i) {
+    const auto start = std::chrono::steady_clock::now();
+    out->buffer.Clear();
+    DRACO_RETURN_IF_ERROR(
+        EncodeMeshWithSettings(mesh, settings, &out->buffer, &out->summary));
+    out->ms = std::min(out->ms, MillisecondsSince(start));
+  }
+  return OkStatus();
+}
+
+StatusOr<std::unique_ptr<Mesh>> DecodeTimed(const EncoderBuffer &encoded,
+                                            int repeat, double *ms) {
+  std::unique_ptr<Mesh> mesh;
+  *ms = std::numeric_limits<double>::max();
+  for (int i = 0; i < std::max(1, repeat); ++i) {
+    DecoderBuffer buffer;
+    buffer.Init(encoded.data(), encoded.size());
+    Decoder decoder;
+    const auto start = std::chrono::steady_clock::now();
+    DRACO_ASSIGN_OR_RETURN(mesh, decoder.DecodeMeshFromBuffer(&buffer));
+    *ms = std::min(*ms, MillisecondsSince(start));
+  }
+  return mesh;
+}
+
+StatusOr<int64_t> EncodedSize(const Mesh &mesh,
+                              const UvEncodeSettings &settings) {
+  EncoderBuffer buffer;
+  DRACO_RETURN_IF_ERROR(EncodeMeshWithSettings(mesh, settings, &buffer));
+  return static_cast<int64_t>(buffer.size());
+}
+
+// Texture coordinates at every face corner, all UV sets, in face order.
+std::vector<float> CornerUvs(const Mesh &mesh) {
+  std::vector<float> values;
+  for (const PointAttribute *att : TexCoordAttributes(mesh)) {
+    for (FaceIndex f(0); f < mesh.num_faces(); ++f) {
+      for (const PointIndex point : mesh.face(f)) {
+        const auto uv = UvAt(*att, point);
+        values.insert(values.end(), uv.begin(), uv.end());
+      }
+    }
+  }
+  return values;
+}
+
+// Quantizes positions like Draco's AttributeQuantizationTransform, with the
+// parameters of the original mesh, so that decoded positions map back to the
+// original's integers.
+class PositionKeyer {
+ public:
+  PositionKeyer(const PointAttribute &position, int qp) {
+    min_.fill(std::numeric_limits<float>::max());
+    std::array<float, 3> max;
+    max.fill(std::numeric_limits<float>::lowest());
+    for (AttributeValueIndex i(0); i < position.size(); ++i) {
+      std::array<float, 3> p;
+      position.GetValue(i, p.data());
+      for (int c = 0; c < 3; ++c) {
+        min_[c] = std::min(min_[c], p[c]);
+        max[c] = std::max(max[c], p[c]);
+      }
+    }
+    float range = 0.f;
+    for (int c = 0; c < 3; ++c) {
+      range = std::max(range, max[c] - min_[c]);
+    }
+    quantizer_.Init(range > 0.f ? range : 1.f, (1 << qp) - 1);
+  }
+
+  // The face's quantized corner positions in a canonical rotation;
+  // |rotation| receives the face corner it starts at.
+  std::array<int32_t, 9> FaceKey(const Mesh &mesh, FaceIndex f,
+                                 int *rotation) const {
+    const PointAttribute &position =
+        *mesh.GetNamedAttribute(GeometryAttribute::POSITION);
+    std::array<std::array<int32_t, 3>, 3> corners;
+    for (int k = 0; k < 3; ++k) {
+      std::array<float, 3> p;
+      position.ConvertValue(position.mapped_index(mesh.face(f)[k]), 3,
+                            p.data());
+      for (int c = 0; c < 3; ++c) {
+        corners[k][c] = quantizer_.QuantizeFloat(p[c] - min_[c]);
+      }
+    }
+    // The smallest of the three rotations, so that faces with repeated
+    // corners get one key too.
+    std::array<int32_t, 9> best_key;
+    for (int start = 0; start < 3; ++start) {
+      std::array<int32_t, 9> key;
+      for (int k = 0; k < 3; ++k) {
+        const auto &corner = corners[(start + k) % 3];
+        std::copy(corner.begin(), corner.end(), key.begin() + 3 * k);
+      }
+      if (start == 0 || key < best_key) {
+        best_key = key;
+        *rotation = start;
+      }
+    }
+    return best_key;
+  }
+
+ private:
+  std::array<float, 3> min_;
+  Quantizer quantizer_;
+};
+
+// Squared UV distance between corner k (canonical order) of two faces,
+// summed over all UV sets.
+double FaceUvError2(const Mesh &a, FaceIndex fa, int rot_a, const Mesh &b,
+                    FaceIndex fb, int rot_b, int k) {
+  const auto atts_a = TexCoordAttributes(a);
+  const auto atts_b = TexCoordAttributes(b);
+  double error2 = 0;
+  for (size_t i = 0; i < atts_a.size() && i < atts_b.size(); ++i) {
+    const auto ua = UvAt(*atts_a[i], a.face(fa)[(rot_a + k) % 3]);
+    const auto ub = UvAt(*atts_b[i], b.face(fb)[(rot_b + k) % 3]);
+    error2 += (ua[0] - ub[0]) * double(ua[0] - ub[0]) +
+              (ua[1] - ub[1]) * double(ua[1] - ub[1]);
+  }
+  return error2;
+}
+
+// Original faces by position key, each with its rotation.
+typedef std::map<std::array<int32_t, 9>, std::vector<std::pair<FaceIndex, int>>>
+    FaceIndexByKey;
+
+}  // namespace
+
+std::vector<std::string> ListMeshFiles(const std::string &input) {
+  namespace fs = std::filesystem;
+  if (!fs::is_directory(input)) {
+    return {input};
+  }
+  std::vector<std::string> meshes;
+  for (const auto &entry : fs::directory_iterator(input)) {
+    std::string ext = entry.path().extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), ::tolower);
+    if (entry.is_regular_file() &&
+        (ext == ".obj" || ext == ".ply" || ext == ".gltf" || ext == ".glb")) {
+      meshes.push_back(entry.path().string());
+    }
+  }
+  std::sort(meshes.begin(), meshes.end());
+  return meshes;
+}
+
+int64_t CountUvVertices(const Mesh &mesh) {
+  const PointAttribute *const position =
+      mesh.GetNamedAttribute(GeometryAttribute::POSITION);
+  int64_t count = 0;
+  for (const PointAttribute *att : TexCoordAttributes(mesh)) {
+    std::unordered_set<uint64_t> pairs;
+    for (PointIndex p(0); p < mesh.num_points(); ++p) {
+      pairs.insert((uint64_t{position->mapped_index(p).value()} << 32) |
+                   att->mapped_index(p).value());
+    }
+    count += static_cast<int64_t>(pairs.size());
+  }
+  return count;
+}
+
+double StockSeamBytes(const Mesh &mesh) {
+  const std::unique_ptr<CornerTable> table =
+      CreateCornerTableFromPositionAttribute(&mesh);
+  if (table == nullptr) {
+    return 0;
+  }
+  double bytes = 0;
+  for (const PointAttribute *att : TexCoordAttributes(mesh)) {
+    MeshAttributeCornerTable att_table;
+    if (!att_table.InitFromAttribute(&mesh, table.get(), att)) {
+      continue;
+    }
+    RAnsBitEncoder encoder;
+    encoder.StartEncoding();
+    for (CornerIndex c(0); c < table->num_corners(); ++c) {
+      const CornerIndex opposite = table->Opposite(c);
+      if (opposite != kInvalidCornerIndex && c < opposite) {
+        encoder.EncodeBit(att_table.IsCornerOppositeToSeamEdge(c));
+      }
+    }
+    EncoderBuffer buffer;
+    encoder.EndEncoding(&buffer);
+    bytes += static_cast<double>(buffer.size());
+  }
+  return bytes;
+}
+
+StatusOr<double> UvRmse(const Mesh &original, const Mesh &decoded, int qp) {
+  const PointAttribute *const position =
+      original.GetNamedAttribute(GeometryAttribute::POSITION);
+  if (position == nullptr ||
+      decoded.GetNamedAttribute(GeometryAttribute::POSITION) == nullptr) {
+    return Status(Status::DRACO_ERROR, "RMSE needs positions.");
+  }
+  const PositionKeyer keyer(*position, qp);
+  FaceIndexByKey faces;
+  for (FaceIndex f(0); f < original.num_faces(); ++f) {
+    int rotation;
+    faces[keyer.FaceKey(original, f, &rotation)].push_back({f, rotation});
+  }
+  // Eq. (9): one error per texture vertex, i.e. per original point (a
+  // distinct combination of position and texture coordinates), taken the
+  // first time a decoded corner maps to it.
+  std::unordered_set<uint64_t> seen;
+  double sum2 = 0;
+  for (FaceIndex f(0); f < decoded.num_faces(); ++f) {
+    int rotation;
+    auto it = faces.find(keyer.FaceKey(decoded, f, &rotation));
+    if (it == faces.end() || it->second.empty()) {
+      return Status(Status::DRACO_ERROR,
+                    "RMSE: a decoded face has no original counterpart.");
+    }
+    // Duplicate faces (same positions): take the closest unused one.
+    auto &candidates = it->second;
+    size_t best = 0;
+    double best_error = std::numeric_limits<double>::max();
+    for (size_t i = 0; i < candidates.size(); ++i) {
+      double error = 0;
+      for (int k = 0; k < 3; ++k) {
+        error += FaceUvError2(original, candidates[i].first,
+                              candidates[i].second, decoded, f, rotation, k);
+      }
+      if (error < best_error) {
+        best_error = error;
+        best = i;
+      }
+    }
+    const auto match = candidates[best];
+    candidates.erase(candidates.begin() + best);
+    for (int k = 0; k < 3; ++k) {
+      const PointIndex point = original.face(match.first)[(match.second + k) % 3];
+      if (seen.insert(point.value()).second) {
+        sum2 += FaceUvError2(original, match.first, match.second, decoded, f,
+                             rotation, k);
+      }
+    }
+  }
+  return seen.empty() ? 0.0 : std::sqrt(sum2 / static_cast<double>(seen.size()));
+}
+
+namespace {
+
+// Everything measured once per mesh and qt that every scheme is compared to.
+struct UvEvalBaseline {
+  // At the evaluated -cl, per -uv_seams name (the seams of other
+  // non-position attributes, e.g. normals, depend on it).
+  std::map<std::string, int64_t> size_without_uvs;
+  int64_t stock_best_uv_bytes = 0;  // Best of -cl 7 and -cl 10.
+  std::vector<float> reference_uvs;  // Stock Draco's decoded UVs.
+};
+
+// The measured scheme names: every scheme with every seam coding.
+std::vector<std::string> MeasuredSchemes(const UvEvalOptions &options) {
+  std::vector<std::string> names;
+  for (const std::string &scheme : options.schemes) {
+    if (scheme.find('+') != std::string::npos) {
+      names.push_back(scheme);  // Its seam coding is given.
+      continue;
+    }
+    for (const std::string &seams : options.seams) {
+      names.push_back(seams == "draco" ? scheme : scheme + "+" + seams);
+    }
+  }
+  return names;
+}
+
+StatusOr<int64_t> StockUvBytes(const Mesh &mesh, const Mesh &without,
+                               UvEncodeSettings settings) {
+  DRACO_ASSIGN_OR_RETURN(const int64_t with_uvs, EncodedSize(mesh, settings));
+  settings.qt = 0;
+  DRACO_ASSIGN_OR_RETURN(const int64_t no_uvs, EncodedSize(without, settings));
+  return with_uvs - no_uvs;
+}
+
+StatusOr<UvEvalBaseline> MeasureBaseline(const Mesh &mesh, const Mesh &without,
+                                         const UvEvalOptions &options,
+                                         int qt) {
+  UvEvalBaseline baseline;
+  UvEncodeSettings settings{options.qp, 0, options.cl, "", ""};
+  for (const std::string &scheme : MeasuredSchemes(options)) {
+    std::string uv_pred;
+    SplitSchemeName(scheme, &uv_pred, &settings.uv_seams);
+    if (baseline.size_without_uvs.count(settings.uv_seams) == 0) {
+      DRACO_ASSIGN_OR_RETURN(baseline.size_without_uvs[settings.uv_seams],
+                             EncodedSize(without, settings));
+    }
+  }
+  settings.uv_seams.clear();
+  settings.qt = qt;
+  baseline.stock_best_uv_bytes = std::numeric_limits<int64_t>::max();
+  for (const int cl : {7, 10}) {
+    settings.cl = cl;
+    DRACO_ASSIGN_OR_RETURN(const int64_t bytes,
+                           StockUvBytes(mesh, without, settings));
+    baseline.stock_best_uv_bytes = std::min(baseline.stock_best_uv_bytes, bytes);
+  }
+  settings.cl = options.cl;
+  TimedEncoding stock;
+  DRACO_RETURN_IF_ERROR(EncodeTimed(mesh, settings, 1, &stock));
+  double ms;
+  DRACO_ASSIGN_OR_RETURN(const auto decoded, DecodeTimed(stock.buffer, 1, &ms));
+  baseline.reference_uvs = CornerUvs(*decoded);
+  return baseline;
+}
+
+// Seam bytes of |mesh| encoded with |settings| (see UvEvalRow::seam_bytes).
+StatusOr<double> SeamBytes(const Mesh &mesh, const UvEncodeSettings &settings) {
+  if (settings.uv_seams.empty() || settings.uv_seams == "draco") {
+    return StockSeamBytes(mesh);
+  }
+  DRACO_ASSIGN_OR_RETURN(const UvSeamProblem problem,
+                         BuildUvSeamProblem(mesh, settings));
+  return static_cast<double>(ContextSeamStreamBytes(problem));
+}
+
+StatusOr<UvEvalRow> MeasureScheme(const std::string &name, const Mesh &mesh,
+                                  const UvEvalOptions &options, int qt,
+                                  const std::string &scheme,
+                                  const UvEvalBaseline &baseline) {
+  UvEvalRow row;
+  row.mesh = name;
+  row.scheme = scheme;
+  row.qt = qt;
+  row.uv_vertices = CountUvVertices(mesh);
+  UvEncodeSettings settings{options.qp, qt, options.cl, "", ""};
+  SplitSchemeName(scheme, &settings.uv_pred, &settings.uv_seams);
+  if (settings.uv_pred == "draco") {
+    settings.uv_pred.clear();
+  }
+  row.lossy = IsUvLaplacianName(settings.uv_pred);
+  if (row.lossy) {
+    settings.uv_anchors = options.uv_anchors;
+  }
+  const int64_t size_without_uvs =
+      baseline.size_without_uvs.at(settings.uv_seams);
+  TimedEncoding encoding;
+  DRACO_RETURN_IF_ERROR(
+      EncodeTimed(mesh, settings, options.repeat, &encoding));
+  row.enc_ms = encoding.ms;
+  DRACO_ASSIGN_OR_RETURN(const auto decoded,
+                         DecodeTimed(encoding.buffer, options.repeat, &row.dec_ms));
+  row.uv_bytes =
+      static_cast<int64_t>(encoding.buffer.size()) - size_without_uvs;
+  DRACO_ASSIGN_OR_RETURN(row.seam_bytes, SeamBytes(mesh, settings));
+  row.bpv = row.uv_vertices > 0 ? 8.0 * row.uv_bytes / row.uv_vertices : 0.0;
+  row.ratio_vs_draco =
+      static_cast<double>(row.uv_bytes) / baseline.stock_best_uv_bytes;
+  row.round_trip_ok =
+      row.lossy || CornerUvs(*decoded) == baseline.reference_uvs;
+  DRACO_ASSIGN_OR_RETURN(row.rmse, UvRmse(mesh, *decoded, options.qp));
+  row.detail = encoding.summary;
+  return row;
+}
+
+}  // namespace
+
+void SplitSchemeName(const std::string &scheme, std::string *uv_pred,
+                     std::string *uv_seams) {
+  const size_t plus = scheme.find('+');
+  *uv_pred = scheme.substr(0, plus);
+  *uv_seams = plus == std::string::npos ? "draco" : scheme.substr(plus + 1);
+}
+
+StatusOr<std::vector<UvEvalRow>> EvaluateMesh(const std::string &name,
+                                              const Mesh &mesh,
+                                              const UvEvalOptions &options) {
+  if (mesh.num_faces() == 0 ||
+      mesh.NumNamedAttributes(GeometryAttribute::TEX_COORD) == 0) {
+    return Status(Status::DRACO_ERROR,
+                  name + ": not a mesh with texture coordinates.");
+  }
+  const std::unique_ptr<Mesh> without = WithoutTexCoords(mesh);
+  std::vector<UvEvalRow> rows;
+  for (const int qt : options.qt) {
+    DRACO_ASSIGN_OR_RETURN(const UvEvalBaseline baseline,
+                           MeasureBaseline(mesh, *without, options, qt));
+    for (const std::string &scheme : MeasuredSchemes(options)) {
+      DRACO_ASSIGN_OR_RETURN(
+          UvEvalRow row,
+          MeasureScheme(name, mesh, options, qt, scheme, baseline));
+      rows.push_back(std::move(row));
+    }
+  }
+  return rows;
+}
+
+}  // namespace draco

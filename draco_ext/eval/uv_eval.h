@@ -1,0 +1,101 @@
+// Copyright 2026 The draco-uv Authors.
+//
+// Licensed under the Apache License, Version 2.0 (the "License");
+// you may not use this file except in compliance with the License.
+// You may obtain a copy of the License at
+//
+//      http://www.apache.org/licenses/LICENSE-2.0
+//
+// Unless required by applicable law or agreed to in writing, software
+// distributed under the License is distributed on an "AS IS" BASIS,
+// WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+// See the License for the specific language governing permissions and
+// limitations under the License.
+//
+// Measurements behind draco_uv_eval and the benchmarks: what each UV coder
+// costs on a mesh, in the terms of [Váša & Brunnett 2014] section 6 (bits
+// per UV vertex, RMSE of eq. 9) plus encode and decode times.
+#ifndef DRACO_EXT_EVAL_UV_EVAL_H_
+#define DRACO_EXT_EVAL_UV_EVAL_H_
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "draco/core/status_or.h"
+#include "draco/mesh/mesh.h"
+
+namespace draco {
+
+struct UvEvalOptions {
+  std::vector<int> qt = {10, 12};
+  int qp = 14;
+  int cl = 10;
+  // -uv_pred names; "draco" is always measured (it is the reference).
+  std::vector<std::string> schemes = {"draco",    "parallelogram",
+                                      "portable", "multi_parallelogram",
+                                      "weighted", "auto"};
+  int repeat = 3;  // Timings are the minimum over this many runs.
+  // -uv_seams names: every scheme is measured with each. Rows of a coding
+  // other than "draco" name their scheme "<scheme>+<coding>" (a scheme may
+  // also be given so, e.g. "weighted+context"). The reference (stock
+  // Draco's best of -cl 7 and 10) keeps stock seams.
+  std::vector<std::string> seams = {"draco"};
+  // -uv_anchors of the Laplacian schemes; empty means the default.
+  std::string uv_anchors;
+};
+
+// The -uv_pred and -uv_seams names of a measured scheme name
+// ("weighted+context": weighted, context; "weighted": weighted, draco).
+void SplitSchemeName(const std::string &scheme, std::string *uv_pred,
+                     std::string *uv_seams);
+
+// One (mesh, scheme, qt) measurement.
+struct UvEvalRow {
+  std::string mesh;
+  std::string scheme;
+  int qt = 0;
+  int64_t uv_vertices = 0;  // Distinct (position, UV) pairs, all UV sets.
+  int64_t uv_bytes = 0;     // size(with UVs) - size(without UVs).
+  double seam_bytes = 0;    // Part of uv_bytes spent on seams: stock
+                            // Draco's bit streams of the TEX_COORD
+                            // attributes, or with -uv_seams context the
+                            // exact stream, which codes the seams of all
+                            // non-position attributes jointly.
+  double bpv = 0;           // 8 * uv_bytes / uv_vertices.
+  double rmse = 0;          // Eq. (9) in UV units, all UV sets.
+  double enc_ms = 0;
+  double dec_ms = 0;        // Decoding the whole mesh.
+  double ratio_vs_draco = 0;  // uv_bytes / stock's best of -cl 7 and 10.
+  bool lossy = false;          // A lossy scheme (the Laplacians).
+  // Decoded UVs as expected: bit-exact for lossless schemes, decoded at all
+  // for lossy ones (their error is |rmse|).
+  bool round_trip_ok = false;
+  std::string detail;          // E.g. what "auto" chose.
+};
+
+// Distinct (position, texture coordinate) pairs over all TEX_COORD
+// attributes: the texture vertices the paper counts.
+int64_t CountUvVertices(const Mesh &mesh);
+
+// The mesh files (.obj, .ply, .gltf, .glb in any case) of folder |input|,
+// sorted, or |input| itself when it is not a folder: what the evaluation
+// tools read.
+std::vector<std::string> ListMeshFiles(const std::string &input);
+
+// Bytes stock Draco's Edgebreaker spends on the seams of the TEX_COORD
+// attributes: one static-probability rANS bit per interior edge each.
+double StockSeamBytes(const Mesh &mesh);
+
+// RMSE (eq. 9) of |decoded|'s texture coordinates against |original|'s,
+// matching faces by their positions quantized with |qp| bits.
+StatusOr<double> UvRmse(const Mesh &original, const Mesh &decoded, int qp);
+
+// Measures every scheme of |options| at every qt on |mesh|.
+StatusOr<std::vector<UvEvalRow>> EvaluateMesh(const std::string &name,
+                                              const Mesh &mesh,
+                                              const UvEvalOptions &options);
+
+}  // namespace draco
+
+#endif  // DRACO_EXT_EVAL_UV_EVAL_H_

@@ -1,0 +1,214 @@
+// Copyright 2026 The draco-uv Authors.
+//
+// Licensed under the Apache License, Version 2.0 (the "License");
+// you may not use this file except in compliance with the License.
+// You may obtain a copy of the License at
+//
+//      http://www.apache.org/licenses/LICENSE-2.0
+//
+// Unless required by applicable law or agreed to in writing, software
+// distributed under the License is distributed on an "AS IS" BASIS,
+// WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+// See the License for the specific language governing permissions and
+// limitations under the License.
+//
+#include "draco_ext/eval/uv_eval_report.h"
+
+#include <algorithm>
+#include <cstdarg>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <numeric>
+#include <sstream>
+
+namespace draco {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+// 4096^2 texture: RMSE in texels is RMSE in UV units times 4096.
+constexpr double kTexelsPerUvUnit = 4096.0;
+
+std::string Format(const char *format, ...) __attribute__((format(printf, 1, 2)));
+std::string Format(const char *format, ...) {
+  char text[512];
+  va_list args;
+  va_start(args, format);
+  vsnprintf(text, sizeof(text), format, args);
+  va_end(args);
+  return text;
+}
+
+std::vector<std::string> SplitTabs(const std::string &line) {
+  std::vector<std::string> fields;
+  std::stringstream stream(line);
+  std::string field;
+  while (std::getline(stream, field, '\t')) {
+    fields.push_back(field);
+  }
+  return fields;
+}
+
+std::map<std::string, std::string> ReadManifest(const fs::path &path) {
+  std::map<std::string, std::string> kinds;
+  std::ifstream file(path);
+  std::string line;
+  if (!std::getline(file, line)) {
+    return kinds;
+  }
+  const std::vector<std::string> header = SplitTabs(line);
+  const auto name_it = std::find(header.begin(), header.end(), "name");
+  const auto kind_it = std::find(header.begin(), header.end(), "kind");
+  if (name_it == header.end() || kind_it == header.end()) {
+    return kinds;
+  }
+  const size_t name_col = name_it - header.begin();
+  const size_t kind_col = kind_it - header.begin();
+  while (std::getline(file, line)) {
+    const std::vector<std::string> fields = SplitTabs(line);
+    if (fields.size() > std::max(name_col, kind_col)) {
+      kinds[fields[name_col]] = fields[kind_col];
+    }
+  }
+  return kinds;
+}
+
+double Median(std::vector<double> values) {
+  if (values.empty()) {
+    return 0;
+  }
+  std::sort(values.begin(), values.end());
+  const size_t n = values.size();
+  return n % 2 ? values[n / 2] : (values[n / 2 - 1] + values[n / 2]) / 2;
+}
+
+double Mean(const std::vector<double> &values) {
+  return values.empty() ? 0
+                        : std::accumulate(values.begin(), values.end(), 0.0) /
+                              values.size();
+}
+
+std::string SummaryLine(const std::string &label,
+                        const std::vector<double> &ratios,
+                        const std::vector<double> &bpvs) {
+  return Format("  %-42s %6zu %8.3f %8.3f %8.3f %9.2f\n", label.c_str(),
+                ratios.size(), Median(ratios), Mean(ratios),
+                ratios.empty() ? 0.0
+                               : *std::max_element(ratios.begin(), ratios.end()),
+                Median(bpvs));
+}
+
+}  // namespace
+
+std::map<std::string, std::string> ReadMeshKinds(const fs::path &input) {
+  if (!fs::is_directory(input)) {
+    return {};
+  }
+  for (const fs::path &dir : {input, input.parent_path()}) {
+    if (fs::exists(dir / "MANIFEST.tsv")) {
+      return ReadManifest(dir / "MANIFEST.tsv");
+    }
+  }
+  return {};
+}
+
+std::string FormatMeshTable(const std::vector<UvEvalRow> &rows) {
+  if (rows.empty()) {
+    return "";
+  }
+  std::string table = Format("%s: %lld UV vertices\n", rows[0].mesh.c_str(),
+                             static_cast<long long>(rows[0].uv_vertices));
+  table += Format("  %3s %-20s %10s %8s %7s %7s %10s %8s %8s %8s %s\n", "qt",
+                  "scheme", "UV bytes", "seams", "bpv", "ratio", "RMSE",
+                  "texels", "enc ms", "dec ms", "round trip");
+  for (const UvEvalRow &row : rows) {
+    table += Format(
+        "  %3d %-20s %10lld %8.0f %7.3f %7.3f %10.3e %8.3f %8.2f %8.2f %s\n",
+        row.qt, row.scheme.c_str(), static_cast<long long>(row.uv_bytes),
+        row.seam_bytes, row.bpv, row.ratio_vs_draco, row.rmse,
+        row.rmse * kTexelsPerUvUnit, row.enc_ms, row.dec_ms,
+        !row.round_trip_ok ? "MISMATCH" : row.lossy ? "lossy" : "ok");
+  }
+  return table;
+}
+
+std::string CsvHeader() {
+  return "mesh,scheme,qt,uv_vertices,uv_bytes,seam_bytes,bpv,rmse,"
+         "rmse_texels,enc_ms,dec_ms,ratio_vs_draco,round_trip\n";
+}
+
+std::string CsvLine(const UvEvalRow &row) {
+  return Format("%s,%s,%d,%lld,%lld,%.0f,%.4f,%.6e,%.4f,%.3f,%.3f,%.4f,%s\n",
+                row.mesh.c_str(), row.scheme.c_str(), row.qt,
+                static_cast<long long>(row.uv_vertices),
+                static_cast<long long>(row.uv_bytes), row.seam_bytes, row.bpv,
+                row.rmse, row.rmse * kTexelsPerUvUnit, row.enc_ms, row.dec_ms,
+                row.ratio_vs_draco,
+                !row.round_trip_ok ? "mismatch" : row.lossy ? "lossy" : "ok");
+}
+
+void UvEvalReport::Add(const std::vector<UvEvalRow> &rows) {
+  rows_.insert(rows_.end(), rows.begin(), rows.end());
+}
+
+std::string UvEvalReport::FormatSummary() const {
+  std::map<std::pair<int, std::string>, std::map<std::string, std::vector<double>>>
+      ratios, bpvs;
+  for (const UvEvalRow &row : rows_) {
+    const auto key = std::make_pair(row.qt, row.scheme);
+    const auto kind = kinds_.find(row.mesh);
+    for (const std::string &group :
+         {std::string("all meshes"),
+          kind == kinds_.end() ? std::string() : "kind " + kind->second}) {
+      if (!group.empty()) {
+        ratios[key][group].push_back(row.ratio_vs_draco);
+        bpvs[key][group].push_back(row.bpv);
+      }
+    }
+  }
+  std::string summary = Format(
+      "Summary: UV bytes / stock Draco's best of -cl 7 and -cl 10\n"
+      "  %-42s %6s %8s %8s %8s %9s\n",
+      "qt, scheme, meshes", "n", "median", "mean", "max", "med bpv");
+  for (const auto &entry : ratios) {
+    for (const auto &group : entry.second) {
+      summary += SummaryLine(Format("qt %d %s (%s)", entry.first.first,
+                                    entry.first.second.c_str(),
+                                    group.first.c_str()),
+                             group.second, bpvs.at(entry.first).at(group.first));
+    }
+  }
+  return summary;
+}
+
+bool UvEvalReport::WriteCsv(const std::string &path) const {
+  std::ofstream file(path);
+  file << CsvHeader();
+  for (const UvEvalRow &row : rows_) {
+    file << CsvLine(row);
+  }
+  return static_cast<bool>(file);
+}
+
+bool UvEvalReport::WritePlot(const std::string &path) const {
+  const std::string csv = path + ".csv";
+  if (!WriteCsv(csv)) {
+    return false;
+  }
+  const std::string python =
+      fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
+  const std::string command = python + " \"" DRACO_UV_PLOT_SCRIPT "\" \"" +
+                              csv + "\" \"" + path + "\"";
+  const bool ok = std::system(command.c_str()) == 0;
+  fs::remove(csv);
+  return ok;
+}
+
+bool UvEvalReport::AllRoundTripsOk() const {
+  return std::all_of(rows_.begin(), rows_.end(),
+                     [](const UvEvalRow &row) { return row.round_trip_ok; });
+}
+
+}  // namespace draco

@@ -1,0 +1,135 @@
+// Copyright 2026 The draco-uv Authors.
+//
+// Licensed under the Apache License, Version 2.0 (the "License");
+// you may not use this file except in compliance with the License.
+// You may obtain a copy of the License at
+//
+//      http://www.apache.org/licenses/LICENSE-2.0
+//
+// Unless required by applicable law or agreed to in writing, software
+// distributed under the License is distributed on an "AS IS" BASIS,
+// WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+// See the License for the specific language governing permissions and
+// limitations under the License.
+//
+#include "draco_ext/gltf/uv_gltf.h"
+
+#ifdef DRACO_TRANSCODER_SUPPORTED
+#include <utility>
+#include <vector>
+
+#include "draco/compression/draco_compression_options.h"
+#include "draco/core/encoder_buffer.h"
+#include "draco_ext/options/uv_laplacian_options.h"
+#include "draco_ext/options/uv_prediction_options.h"
+#include "draco_ext/options/uv_seam_options.h"
+
+namespace draco {
+
+bool UsesDracoUvScheme(const Mesh &mesh, const ExpertEncoder &encoder) {
+  for (int i = 0; i < mesh.NumNamedAttributes(GeometryAttribute::TEX_COORD);
+       ++i) {
+    const int att_id =
+        mesh.GetNamedAttributeId(GeometryAttribute::TEX_COORD, i);
+    const int method = encoder.options().GetAttributeInt(
+        att_id, "prediction_scheme", PREDICTION_UNDEFINED);
+    if (IsDracoUvPredictionMethod(
+            static_cast<PredictionSchemeMethod>(method))) {
+      return true;
+    }
+  }
+  return false;
+}
+
+namespace {
+
+// What naming kUvGltfExtension in extensionsUsed and extensionsRequired adds
+// to the JSON that Draco's glTF writer emits: twice the quoted name, a comma
+// and the writer's indentation (76 bytes measured on sphere.gltf), rounded up
+// for GLB's 4-byte padding.
+constexpr size_t kUvGltfExtensionJsonBytes = 80;
+
+StatusOr<size_t> EncodedSize(ExpertEncoder *encoder) {
+  EncoderBuffer buffer;
+  DRACO_RETURN_IF_ERROR(encoder->EncodeToBuffer(&buffer));
+  return buffer.size();
+}
+
+// -uv_pred auto on the first primitive that would need the extension: keeps
+// draco-uv's schemes only if they save more than the extension costs, so that
+// auto never makes a file bigger than stock coding does. Later primitives of
+// the file ride on the extension for free.
+Status KeepDracoUvOnlyIfItPaysForTheExtension(const Mesh &mesh,
+                                              ExpertEncoder *encoder) {
+  DRACO_ASSIGN_OR_RETURN(const size_t chosen_size, EncodedSize(encoder));
+  std::vector<std::pair<int, int>> chosen_methods;
+  for (int i = 0; i < mesh.NumNamedAttributes(GeometryAttribute::TEX_COORD);
+       ++i) {
+    const int att_id =
+        mesh.GetNamedAttributeId(GeometryAttribute::TEX_COORD, i);
+    chosen_methods.emplace_back(
+        att_id, encoder->options().GetAttributeInt(att_id, "prediction_scheme",
+                                                   PREDICTION_UNDEFINED));
+    DRACO_RETURN_IF_ERROR(
+        encoder->SetAttributePredictionScheme(att_id, PREDICTION_UNDEFINED));
+  }
+  DRACO_ASSIGN_OR_RETURN(const size_t stock_size, EncodedSize(encoder));
+  if (chosen_size + kUvGltfExtensionJsonBytes >= stock_size) {
+    return OkStatus();
+  }
+  for (const auto &[att_id, method] : chosen_methods) {
+    DRACO_RETURN_IF_ERROR(encoder->SetAttributePredictionScheme(att_id, method));
+  }
+  return OkStatus();
+}
+
+}  // namespace
+
+Status ConfigureUvCompressionForGltf(
+    const Mesh &mesh, ExpertEncoder &encoder,
+    std::set<std::string> *extensions_used,
+    std::set<std::string> *extensions_required) {
+  const UvCompressionOptions &options = mesh.GetCompressionOptions().uv;
+  if (options.IsStock()) {
+    return OkStatus();
+  }
+  // The per-attribute summaries are for command-line tools; a library stays
+  // quiet.
+  DRACO_RETURN_IF_ERROR(
+      ConfigureUvSeams(options.seams, &mesh, &encoder).status());
+  const bool context_seams =
+      GetUvSeamCoding(encoder.options()) != UvSeamCoding::kDraco;
+  DRACO_RETURN_IF_ERROR(
+      ConfigureUvPrediction(options.prediction, &mesh, &encoder).status());
+  // A primitive without Laplacian-coded texture coordinates ignores
+  // -uv_anchors (CheckUvCompressionOptions() ties it to a Laplacian name).
+  DRACO_RETURN_IF_ERROR(
+      ApplyUvAnchors(options.anchors, &mesh, &encoder).status());
+  // With context seams the primitive needs the extension anyway.
+  if (IsAutoUvPrediction(options.prediction) && !context_seams &&
+      extensions_required->count(kUvGltfExtension) == 0 &&
+      UsesDracoUvScheme(mesh, encoder)) {
+    DRACO_RETURN_IF_ERROR(
+        KeepDracoUvOnlyIfItPaysForTheExtension(mesh, &encoder));
+  }
+  if (UsesDracoUvScheme(mesh, encoder) || context_seams) {
+    extensions_used->insert(kUvGltfExtension);
+    extensions_required->insert(kUvGltfExtension);
+  }
+  return OkStatus();
+}
+
+Status ConfigureUvCompressionForGltf(
+    const Mesh &mesh, const std::unique_ptr<ExpertEncoder> &encoder,
+    std::set<std::string> *extensions_used,
+    std::set<std::string> *extensions_required) {
+  if (encoder == nullptr) {
+    return ErrorStatus("No encoder for the glTF primitive.");
+  }
+  return ConfigureUvCompressionForGltf(mesh, *encoder, extensions_used,
+                                       extensions_required);
+}
+
+}  // namespace draco
+
+#endif  // DRACO_TRANSCODER_SUPPORTED

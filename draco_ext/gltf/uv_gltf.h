@@ -1,0 +1,66 @@
+// Copyright 2026 The draco-uv Authors.
+//
+// Licensed under the Apache License, Version 2.0 (the "License");
+// you may not use this file except in compliance with the License.
+// You may obtain a copy of the License at
+//
+//      http://www.apache.org/licenses/LICENSE-2.0
+//
+// Unless required by applicable law or agreed to in writing, software
+// distributed under the License is distributed on an "AS IS" BASIS,
+// WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+// See the License for the specific language governing permissions and
+// limitations under the License.
+//
+// draco-uv in glTF files: the texture coordinate coders of each
+// KHR_draco_mesh_compression primitive, and the glTF extension
+// (uv_gltf_extension.h) that marks files using them.
+#ifndef DRACO_EXT_GLTF_UV_GLTF_H_
+#define DRACO_EXT_GLTF_UV_GLTF_H_
+
+#include "draco/draco_features.h"
+
+#ifdef DRACO_TRANSCODER_SUPPORTED
+#include <memory>
+#include <set>
+#include <string>
+
+#include "draco/compression/expert_encode.h"
+#include "draco/core/status.h"
+#include "draco/mesh/mesh.h"
+#include "draco_ext/gltf/uv_gltf_extension.h"
+
+namespace draco {
+
+// Applies the UvCompressionOptions of |mesh| (mesh.GetCompressionOptions()
+// .uv) to |encoder|, which encodes |mesh|, the copy of a glTF primitive in
+// GltfAsset::CompressMeshWithDraco() (patches/0015) with quantization set
+// and V already flipped to glTF's convention (the coders infer UV
+// orientation from the data, so the mirror costs nothing). When a TEX_COORD
+// attribute ends up with a draco-uv scheme or the seams with draco-uv's
+// coding (-uv_seams context, which applies to every primitive with an
+// attribute besides positions), adds kUvGltfExtension to |extensions_used|
+// and |extensions_required|. With -uv_pred auto and stock seams, the first
+// primitive that would need the extension keeps draco-uv's schemes only if
+// they save more bytes than the extension adds to the JSON, so auto never
+// makes a file bigger than stock coding. Stock options change nothing.
+//
+// Draco 1.5.5 holds the encoder by value and 1.5.7 and newer in a
+// unique_ptr; one overload each keeps the hook's text the same in both.
+Status ConfigureUvCompressionForGltf(
+    const Mesh &mesh, ExpertEncoder &encoder,
+    std::set<std::string> *extensions_used,
+    std::set<std::string> *extensions_required);
+Status ConfigureUvCompressionForGltf(
+    const Mesh &mesh, const std::unique_ptr<ExpertEncoder> &encoder,
+    std::set<std::string> *extensions_used,
+    std::set<std::string> *extensions_required);
+
+// True when |encoder| is set to code a TEX_COORD attribute of |mesh| with a
+// draco-uv scheme, i.e. when its output needs a decoder with draco-uv.
+bool UsesDracoUvScheme(const Mesh &mesh, const ExpertEncoder &encoder);
+
+}  // namespace draco
+
+#endif  // DRACO_TRANSCODER_SUPPORTED
+#endif  // DRACO_EXT_GLTF_UV_GLTF_H_

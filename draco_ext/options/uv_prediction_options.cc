@@ -1,0 +1,301 @@
+// Copyright 2026 The draco-uv Authors.
+//
+// Licensed under the Apache License, Version 2.0 (the "License");
+// you may not use this file except in compliance with the License.
+// You may obtain a copy of the License at
+//
+//      http://www.apache.org/licenses/LICENSE-2.0
+//
+// Unless required by applicable law or agreed to in writing, software
+// distributed under the License is distributed on an "AS IS" BASIS,
+// WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+// See the License for the specific language governing permissions and
+// limitations under the License.
+//
+#include "draco_ext/options/uv_prediction_options.h"
+
+#include <cmath>
+#include <limits>
+#include <vector>
+
+#include "draco/core/encoder_buffer.h"
+#include "draco_ext/options/uv_laplacian_options.h"
+#include "draco_ext/weighted/uv_stencil_geometry.h"
+
+namespace draco {
+
+namespace {
+
+constexpr char kAutoName[] = "auto";
+
+// At speed 10 (-cl 0) Draco encodes meshes sequentially, without the
+// connectivity that mesh prediction schemes need.
+constexpr int kSequentialEncodingSpeed = 10;
+
+bool IsWeighted(PredictionSchemeMethod method) {
+  return method == MESH_PREDICTION_TEX_COORDS_WEIGHTED ||
+         method == MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI;
+}
+
+std::vector<int> TexCoordAttributeIds(const Mesh &mesh) {
+  std::vector<int> ids;
+  for (int i = 0; i < mesh.NumNamedAttributes(GeometryAttribute::TEX_COORD);
+       ++i) {
+    ids.push_back(mesh.GetNamedAttributeId(GeometryAttribute::TEX_COORD, i));
+  }
+  return ids;
+}
+
+int QuantizationBits(const ExpertEncoder &encoder, int att_id) {
+  return encoder.options().GetAttributeInt(att_id, "quantization_bits", -1);
+}
+
+// Checks the settings every non-stock -uv_pred needs: Edgebreaker encoding
+// and quantized texture coordinates.
+Status CheckCommonSettings(const ExpertEncoder &encoder, int att_id) {
+  if (encoder.options().GetSpeed() >= kSequentialEncodingSpeed) {
+    return Status(Status::DRACO_ERROR,
+                  "-uv_pred needs Edgebreaker encoding: use -cl 1 or higher.");
+  }
+  if (QuantizationBits(encoder, att_id) <= 0) {
+    return Status(Status::DRACO_ERROR,
+                  "-uv_pred needs quantized texture coordinates (-qt > 0).");
+  }
+  return OkStatus();
+}
+
+std::string AttributeLabel(const Mesh &mesh, int att_id) {
+  int index = 0;
+  while (mesh.GetNamedAttributeId(GeometryAttribute::TEX_COORD, index) !=
+         att_id) {
+    ++index;
+  }
+  return "TEX_COORD " + std::to_string(index) + " (attribute " +
+         std::to_string(att_id) + ")";
+}
+
+// True when the floating point attribute |att| holds a NaN or an infinity.
+bool HasNonFiniteValue(const PointAttribute &att) {
+  if (att.data_type() != DT_FLOAT32 && att.data_type() != DT_FLOAT64) {
+    return false;
+  }
+  std::vector<double> value(att.num_components());
+  for (AttributeValueIndex i(0); i < static_cast<uint32_t>(att.size()); ++i) {
+    att.ConvertValue(i, att.num_components(), value.data());
+    for (const double x : value) {
+      if (!std::isfinite(x)) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
+// Draco quantizes NaN and infinities to arbitrary integers (only the first
+// value is checked), so draco-uv's schemes refuse them instead of
+// predicting from them.
+Status CheckFiniteValues(PredictionSchemeMethod method, const Mesh &mesh,
+                         int att_id) {
+  const int pos_id = mesh.GetNamedAttributeId(GeometryAttribute::POSITION);
+  for (const int id : {att_id, pos_id}) {
+    if (id >= 0 && HasNonFiniteValue(*mesh.attribute(id))) {
+      return Status(Status::DRACO_ERROR,
+                    "-uv_pred " + UvPredictionNameOf(method) + ": " +
+                        (id == pos_id ? std::string("POSITION")
+                                      : AttributeLabel(mesh, att_id)) +
+                        " has NaN or infinite values.");
+    }
+  }
+  return OkStatus();
+}
+
+// Checks what |method| needs beyond CheckCommonSettings() to code the
+// TEX_COORD attribute |att_id|.
+Status CheckSettingsFor(PredictionSchemeMethod method, const Mesh &mesh,
+                        const ExpertEncoder &encoder, int att_id) {
+  if (IsWeighted(method) &&
+      QuantizationBits(encoder, att_id) > kUvStencilMaxUvQuantizationBits) {
+    return Status(Status::DRACO_ERROR,
+                  "-uv_pred " + UvPredictionNameOf(method) +
+                      " supports -qt up to " +
+                      std::to_string(kUvStencilMaxUvQuantizationBits) + ".");
+  }
+  if (UvPredictionNeedsQuantizedPositions(method)) {
+    const int pos_id = mesh.GetNamedAttributeId(GeometryAttribute::POSITION);
+    if (pos_id < 0) {
+      return Status(Status::DRACO_ERROR,
+                    "-uv_pred: the mesh has no POSITION attribute.");
+    }
+    if (QuantizationBits(encoder, pos_id) <= 0 &&
+        !IsDataTypeIntegral(mesh.attribute(pos_id)->data_type())) {
+      return Status(Status::DRACO_ERROR,
+                    "-uv_pred needs quantized positions (-qp > 0).");
+    }
+  }
+  if (IsDracoUvPredictionMethod(method)) {
+    return CheckFiniteValues(method, mesh, att_id);
+  }
+  return OkStatus();
+}
+
+StatusOr<size_t> EncodedSize(ExpertEncoder *encoder) {
+  EncoderBuffer buffer;
+  DRACO_RETURN_IF_ERROR(encoder->EncodeToBuffer(&buffer));
+  return buffer.size();
+}
+
+// Candidates of -uv_pred auto: every lossless scheme that decodes about as
+// fast as stock Draco (so not weighted_multi, nor the lossy Laplacians). Stock
+// Draco's choice comes first so that it wins ties.
+std::vector<PredictionSchemeMethod> AutoCandidates() {
+  std::vector<PredictionSchemeMethod> candidates;
+  for (const UvPredictionName &entry : UvPredictionNames()) {
+    if (std::string(entry.name) != kAutoName &&
+        entry.method != MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI &&
+        !IsLossyUvPrediction(entry.method)) {
+      candidates.push_back(entry.method);
+    }
+  }
+  return candidates;
+}
+
+// Picks the smallest candidate for |att_id|, leaves it set on |encoder| and
+// returns its summary line.
+StatusOr<std::string> ChooseSmallestFor(const Mesh &mesh, int att_id,
+                                        ExpertEncoder *encoder) {
+  PredictionSchemeMethod best_method = PREDICTION_UNDEFINED;
+  size_t best_size = std::numeric_limits<size_t>::max();
+  size_t stock_size = 0;
+  for (const PredictionSchemeMethod method : AutoCandidates()) {
+    if (!CheckSettingsFor(method, mesh, *encoder, att_id).ok()) {
+      continue;
+    }
+    DRACO_RETURN_IF_ERROR(encoder->SetAttributePredictionScheme(att_id, method));
+    const StatusOr<size_t> size = EncodedSize(encoder);
+    if (method == PREDICTION_UNDEFINED) {
+      DRACO_RETURN_IF_ERROR(size.status());
+      stock_size = size.value();
+    }
+    if (size.ok() && size.value() < best_size) {
+      best_size = size.value();
+      best_method = method;
+    }
+  }
+  DRACO_RETURN_IF_ERROR(
+      encoder->SetAttributePredictionScheme(att_id, best_method));
+  return "UV prediction (auto): " + AttributeLabel(mesh, att_id) + " -> " +
+         UvPredictionNameOf(best_method) + ", " + std::to_string(best_size) +
+         " bytes in all (draco: " + std::to_string(stock_size) + ")\n";
+}
+
+}  // namespace
+
+const std::vector<UvPredictionName> &UvPredictionNames() {
+  static const std::vector<UvPredictionName> names = {
+      {"draco", PREDICTION_UNDEFINED, "stock Draco's choice (default)"},
+      {"parallelogram", MESH_PREDICTION_PARALLELOGRAM,
+       "Draco's parallelogram prediction"},
+      {"multi_parallelogram", MESH_PREDICTION_CONSTRAINED_MULTI_PARALLELOGRAM,
+       "Draco's constrained multi-parallelogram prediction"},
+      {"portable", MESH_PREDICTION_TEX_COORDS_PORTABLE,
+       "Draco's TEX_COORDS_PORTABLE prediction"},
+      {"weighted", MESH_PREDICTION_TEX_COORDS_WEIGHTED,
+       "mesh-guided weighted parallelogram (draco-uv)"},
+      {"weighted_multi", MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI,
+       "weighted, all stencils: smaller, slower to decode"},
+      {"laplacian_tutte", MESH_PREDICTION_TEX_COORDS_LAPLACIAN,
+       "lossy Laplacian coding, Tutte weights (draco-uv)"},
+      {"laplacian_cotan", MESH_PREDICTION_TEX_COORDS_LAPLACIAN,
+       "lossy Laplacian coding, cotangent weights (draco-uv)"},
+      {"laplacian_mv", MESH_PREDICTION_TEX_COORDS_LAPLACIAN,
+       "lossy Laplacian coding, mean-value weights (draco-uv)"},
+      {kAutoName, PREDICTION_UNDEFINED,
+       "smallest of the lossless schemes above but weighted_multi"},
+  };
+  return names;
+}
+
+std::string UvPredictionUsage() {
+  std::string usage =
+      "  -uv_pred <name>       prediction of TEX_COORD attributes "
+      "(needs -cl 1..10):\n";
+  for (const UvPredictionName &entry : UvPredictionNames()) {
+    std::string line = "                          " + std::string(entry.name);
+    line.resize(std::max<size_t>(line.size() + 1, 48), ' ');
+    usage += line + entry.description + "\n";
+  }
+  return usage + UvAnchorsUsage();
+}
+
+bool IsAutoUvPrediction(const std::string &name) { return name == kAutoName; }
+
+StatusOr<PredictionSchemeMethod> ParseUvPredictionName(
+    const std::string &name) {
+  std::string valid;
+  for (const UvPredictionName &entry : UvPredictionNames()) {
+    if (name == entry.name) {
+      return entry.method;
+    }
+    valid += (valid.empty() ? "" : ", ") + std::string(entry.name);
+  }
+  return Status(Status::DRACO_ERROR, "Unknown -uv_pred name '" + name +
+                                         "'. Valid names: " + valid + ".");
+}
+
+std::string UvPredictionNameOf(PredictionSchemeMethod method) {
+  for (const UvPredictionName &entry : UvPredictionNames()) {
+    if (entry.method == method) {
+      return entry.name;
+    }
+  }
+  return std::to_string(static_cast<int>(method));
+}
+
+bool UvPredictionNeedsQuantizedPositions(PredictionSchemeMethod method) {
+  return method == MESH_PREDICTION_TEX_COORDS_PORTABLE || IsWeighted(method) ||
+         method == MESH_PREDICTION_TEX_COORDS_LAPLACIAN;
+}
+
+bool IsDracoUvPredictionMethod(PredictionSchemeMethod method) {
+  // MESH_PREDICTION_GEOMETRIC_NORMAL is the last id of stock Draco 1.5.5 to
+  // 1.5.7; draco-uv's ids follow it (patches/0001).
+  return method > MESH_PREDICTION_GEOMETRIC_NORMAL &&
+         method < NUM_PREDICTION_SCHEMES;
+}
+
+StatusOr<std::string> ConfigureUvPrediction(const std::string &name,
+                                            const Mesh *mesh,
+                                            ExpertEncoder *encoder) {
+  if (name.empty()) {
+    return std::string();
+  }
+  DRACO_ASSIGN_OR_RETURN(const PredictionSchemeMethod method,
+                         ParseUvPredictionName(name));
+  if (name == "draco") {
+    return std::string();
+  }
+  if (mesh == nullptr) {
+    return Status(Status::DRACO_ERROR,
+                  "-uv_pred applies to meshes, not to point clouds.");
+  }
+  std::string summary;
+  for (const int att_id : TexCoordAttributeIds(*mesh)) {
+    DRACO_RETURN_IF_ERROR(CheckCommonSettings(*encoder, att_id));
+    if (IsAutoUvPrediction(name)) {
+      DRACO_ASSIGN_OR_RETURN(const std::string line,
+                             ChooseSmallestFor(*mesh, att_id, encoder));
+      summary += line;
+      continue;
+    }
+    DRACO_RETURN_IF_ERROR(CheckSettingsFor(method, *mesh, *encoder, att_id));
+    DRACO_RETURN_IF_ERROR(encoder->SetAttributePredictionScheme(att_id, method));
+    if (IsUvLaplacianName(name)) {
+      DRACO_RETURN_IF_ERROR(ConfigureUvLaplacian(name, att_id, encoder));
+    }
+    summary += "UV prediction: " + AttributeLabel(*mesh, att_id) + " -> " +
+               name + "\n";
+  }
+  return summary;
+}
+
+}  // namespace draco

@@ -1,0 +1,54 @@
+// Copyright 2026 The draco-uv Authors.
+//
+// Licensed under the Apache License, Version 2.0 (the "License");
+// you may not use this file except in compliance with the License.
+// You may obtain a copy of the License at
+//
+//      http://www.apache.org/licenses/LICENSE-2.0
+//
+// Unless required by applicable law or agreed to in writing, software
+// distributed under the License is distributed on an "AS IS" BASIS,
+// WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+// See the License for the specific language governing permissions and
+// limitations under the License.
+//
+// The encoder side of uv_seam_edgebreaker.h.
+#include "draco/compression/config/compression_shared.h"
+#include "draco/compression/mesh/mesh_edgebreaker_encoder_impl.h"
+#include "draco_ext/seams/mesh_edgebreaker_traversal_uv_seam_encoder.h"
+#include "draco_ext/seams/uv_seam_edgebreaker.h"
+#include "draco_ext/options/uv_seam_options.h"
+
+namespace draco {
+
+int UvSeamEdgebreakerMethodFor(const EncoderOptions &options,
+                               int stock_method) {
+  if (GetUvSeamCoding(options) != UvSeamCoding::kContext) {
+    return stock_method;
+  }
+  switch (stock_method) {
+    case MESH_EDGEBREAKER_STANDARD_ENCODING:
+      return MESH_EDGEBREAKER_STANDARD_CONTEXT_SEAMS_ENCODING;
+    case MESH_EDGEBREAKER_VALENCE_ENCODING:
+      return MESH_EDGEBREAKER_VALENCE_CONTEXT_SEAMS_ENCODING;
+    default:
+      return stock_method;
+  }
+}
+
+std::unique_ptr<MeshEdgebreakerEncoderImplInterface>
+CreateUvSeamEdgebreakerEncoderImpl(int method) {
+  if (method == MESH_EDGEBREAKER_STANDARD_CONTEXT_SEAMS_ENCODING) {
+    return std::unique_ptr<MeshEdgebreakerEncoderImplInterface>(
+        new MeshEdgebreakerEncoderImpl<
+            MeshEdgebreakerTraversalStandardUvSeamEncoder>());
+  }
+  if (method == MESH_EDGEBREAKER_VALENCE_CONTEXT_SEAMS_ENCODING) {
+    return std::unique_ptr<MeshEdgebreakerEncoderImplInterface>(
+        new MeshEdgebreakerEncoderImpl<
+            MeshEdgebreakerTraversalValenceUvSeamEncoder>());
+  }
+  return nullptr;
+}
+
+}  // namespace draco

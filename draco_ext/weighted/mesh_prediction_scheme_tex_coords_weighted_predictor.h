@@ -1,0 +1,782 @@
+// Copyright 2026 The draco-uv Authors.
+//
+// Licensed under the Apache License, Version 2.0 (the "License");
+// you may not use this file except in compliance with the License.
+// You may obtain a copy of the License at
+//
+//      http://www.apache.org/licenses/LICENSE-2.0
+//
+// Unless required by applicable law or agreed to in writing, software
+// distributed under the License is distributed on an "AS IS" BASIS,
+// WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+// See the License for the specific language governing permissions and
+// limitations under the License.
+//
+// Mesh-guided texture coordinate predictor shared by the encoder and the
+// decoder of MESH_PREDICTION_TEX_COORDS_WEIGHTED.
+//
+// Based on:
+//   [Váša & Brunnett 2014] L. Váša, G. Brunnett: Efficient encoding of
+//     texture coordinates guided by mesh geometry. CGF 33(5), section 4.
+//   [Touma & Gotsman 1998] C. Touma, C. Gotsman: Triangle mesh compression.
+//     Graphics Interface 1998 (the parallelogram rule).
+// The stencil arithmetic is in uv_stencil_geometry.h; the variants beyond
+// the paper (stencil averaging, agreement weighting, the per-vertex adaptive
+// choice, inferred orientation) were selected by measuring residual entropy
+// on real meshes (BENCHMARKS.md).
+#ifndef DRACO_EXT_WEIGHTED_MESH_PREDICTION_SCHEME_TEX_COORDS_WEIGHTED_PREDICTOR_H_
+#define DRACO_EXT_WEIGHTED_MESH_PREDICTION_SCHEME_TEX_COORDS_WEIGHTED_PREDICTOR_H_
+
+#include <array>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <tuple>
+#include <vector>
+
+#include "draco/attributes/point_attribute.h"
+#include "draco/attributes/geometry_indices.h"
+#include "draco_ext/common/uv_corner_graph.h"
+#include "draco_ext/weighted/uv_lookahead.h"
+#include "draco_ext/weighted/uv_processing_order.h"
+#include "draco_ext/common/uv_residual_coder.h"
+#include "draco_ext/weighted/uv_stencil_plan.h"
+#include "draco_ext/weighted/mesh_prediction_scheme_tex_coords_weighted_shared.h"
+#include "draco_ext/weighted/uv_stencil_geometry.h"
+
+namespace draco {
+
+// A stencil's unfolded frame, which depends only on the 3D positions;
+// |usable| is false for degenerate or extreme 3D stencils.
+struct UvComputedFrame {
+  UvStencilFrame frame;
+  bool usable = false;
+};
+
+// Predicts the texture coordinates of the entries (UV vertices) of one
+// attribute, in a UvProcessingOrder, from the entries processed before and
+// from the quantised 3D positions of all vertices.
+//
+// Stencils: the faces whose tip (last processed vertex) is O, all of them or
+// (kReach*) the one through which Draco's traversal reaches O; the
+// other two UV vertices L and R are known. Each stencil gives
+//   c  the weighted parallelogram of eq. (3)-(4) when B, the vertex across
+//      LR, is known (exact for locally affine parameterisations), else s;
+//   s  the similarity (conformal) rule; its side of LR comes from B, else
+//      from the opposite vertices of the last step that had any, so no
+//      orientation bit is sent;
+//   a  the parallelogram vL + vR - vB when B is known.
+// Candidates combine all stencils: mean of c and s, mean of c, mean of s,
+// mean of a, and the agreement-weighted mean of (c + s) / 2
+// (UvAgreementWeight()). kAdaptive and kReachAdaptive pick, per vertex, the
+// candidate with the smallest recent errors (a sum over all vertices so far
+// that decays by 15/16 per vertex; it beat the errors at the vertex's own
+// neighbours on 6 of 7 test meshes, and costs no per-vertex memory);
+// kAgreementWeighted always takes the last one, kReachMean the first.
+//
+// Also provides the residual context: the bit length (capped at 7) of the
+// neighbours' mean residual magnitude, 8 without known neighbours.
+//
+// Fallbacks: no stencil (the first two vertices of a chart, degenerate
+// fans): the latest known neighbour, else the previously processed entry,
+// else zero. Stencils with a degenerate 3D edge or extreme coefficients
+// predict the midpoint of LR. A vertex with more than kMaxStencils stencils
+// uses those with the earliest L and R.
+//
+// Weak on layouts unrelated to the geometry (hand-made, mirrored or packed
+// islands) and on chart starts, which are pure deltas; many-chart atlases
+// spend a large share of their bits there.
+//
+// Threads: stencil frames depend only on the connectivity and the
+// positions, so RunUvPrediction() computes them (and the reach kinds'
+// stencils) ahead on a second thread (UvLookahead) when there are at least
+// kMinItemsForLookaheadThread of them, unless set_max_threads(1). The
+// predictions are the same either way.
+template <typename DataTypeT>
+class MeshPredictionSchemeTexCoordsWeightedPredictor {
+ public:
+  // Bounds the weighted sums of Q16 predictions (< 2^52 each) below 2^63.
+  static constexpr int kMaxStencils = 1024;
+  static constexpr int kNumCandidates = 5;
+
+  void SetPositionAttribute(const PointAttribute &position_attribute) {
+    pos_attribute_ = &position_attribute;
+  }
+  void SetEntryToPointIdMap(const PointIndex *map) {
+    entry_to_point_id_map_ = map;
+  }
+  bool IsInitialized() const { return pos_attribute_ != nullptr; }
+  // At most this many threads run a prediction pass (RunUvPrediction()).
+  void set_max_threads(int max_threads) { max_threads_ = max_threads; }
+  int max_threads() const { return max_threads_; }
+
+  typedef UvStencilPlan::Stencil Stencil;
+
+  // Prepares one pass over the entries of |order|, which must outlive it.
+  void Start(UvPredictorKind kind, const UvProcessingOrder &order);
+
+  // The frame of |stencil| with tip |tip|. Reads only the positions cached
+  // by Start(), so other threads may call it during a pass.
+  UvComputedFrame ComputeFrame(const Stencil &stencil, int32_t tip) const;
+
+  // Computes predicted_value() and context() for the entry at |step| of the
+  // order from its stencils and known neighbours (both lists must stay valid
+  // until Update()); |data| holds the values of all earlier steps' entries.
+  // |frames| is null or holds ComputeFrame() of each stencil (then at most
+  // kMaxStencils of them).
+  void Predict(int step, const Stencil *stencils, int num_stencils,
+               const int32_t *neighbours, int num_neighbours,
+               const DataTypeT *data, const UvComputedFrame *frames = nullptr);
+
+  // Records the value (now in |data|) and the correction of the entry just
+  // predicted at |step|.
+  void Update(int step, const DataTypeT *data, const DataTypeT *correction);
+
+  const DataTypeT *predicted_value() const { return predicted_value_; }
+  int context() const { return context_; }
+
+ private:
+  typedef UvStencilPos Pos;
+  typedef UvStencilUv Uv;
+
+  // Indices of the candidates.
+  enum {
+    kMeanOfBoth = 0,
+    kAffineMean = 1,
+    kSimilarityMean = 2,
+    kParallelogramMean = 3,
+    kAgreement = 4
+  };
+
+  Uv UvOf(const DataTypeT *data, int32_t entry) const {
+    return Uv(data[entry * kUvNumComponents],
+              data[entry * kUvNumComponents + 1]);
+  }
+  const Pos &PositionOf(int32_t entry) const { return positions_[entry]; }
+  // Sign of the 2D cross product; 0 also for differences out of the
+  // supported range (only in hostile data), which keeps products < 2^41.
+  static int SignOfCross(const Uv &a, const Uv &b) {
+    if (!IsSupportedUvDifference(a) || !IsSupportedUvDifference(b)) {
+      return 0;
+    }
+    const int64_t cross = a[0] * b[1] - a[1] * b[0];
+    return cross > 0 ? 1 : (cross < 0 ? -1 : 0);
+  }
+
+  bool IsAdaptive() const {
+    return kind_ == UvPredictorKind::kAdaptive ||
+           kind_ == UvPredictorKind::kReachAdaptive;
+  }
+  void CachePositions();
+  // Sets positions_ from |value|(entry, component), shifted as documented.
+  template <class ValueT>
+  void ShiftPositions(ValueT value);
+  void SelectStencils(const Stencil *stencils, int num_stencils);
+  int OrientationFor(const Uv &f, const Uv &g, bool has_b);
+  void PredictStencil(const Stencil &stencil, const UvComputedFrame &frame,
+                      const DataTypeT *data, Uv *affine, Uv *similarity);
+  void ComputeCandidates(int32_t tip, const DataTypeT *data,
+                         const UvComputedFrame *frames);
+  void ComputeCandidatesOfOneStencil(const UvComputedFrame &frame,
+                                     const DataTypeT *data);
+  void ComputeFallback(int step, const DataTypeT *data);
+  int ChooseCandidate() const;
+  void ComputeContext();
+
+  const PointAttribute *pos_attribute_ = nullptr;
+  const PointIndex *entry_to_point_id_map_ = nullptr;
+  UvPredictorKind kind_ = UvPredictorKind::kAdaptive;
+  int max_threads_ = 2;
+  const UvProcessingOrder *order_ = nullptr;
+  int num_entries_ = 0;
+
+  // Positions by entry, minus each component's minimum, below 2^30.
+  std::vector<Pos> positions_;
+  // Per entry: |correction| summed over both components (saturated).
+  std::vector<uint32_t> magnitude_;
+  // Candidates 0 .. num_candidates_ - 1 exist: the reach kinds have no
+  // agreement weighting (one stencil has nothing to agree with).
+  int num_candidates_ = kNumCandidates;
+  // Per candidate: the recent prediction errors, decaying (adaptive kinds).
+  std::array<uint64_t, kNumCandidates> recent_error_ = {};
+  // Orientation the opposite vertices of the last step that had any gave
+  // (+1 before any), and the sum of the current step's.
+  int last_orientation_ = 1;
+  int step_orientation_sum_ = 0;
+
+  // State of the current step.
+  const Stencil *stencils_ = nullptr;
+  int num_stencils_ = 0;
+  const int32_t *neighbours_ = nullptr;
+  int num_neighbours_ = 0;
+  std::vector<Stencil> selected_stencils_;  // Only for very long rows.
+  std::array<Uv, kNumCandidates> candidates_;  // Rounded to texture units.
+  DataTypeT predicted_value_[kUvNumComponents] = {};
+  int context_ = 0;
+};
+
+template <typename DataTypeT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::
+    CachePositions() {
+  positions_.resize(num_entries_);
+  if (pos_attribute_->data_type() == DT_INT32) {
+    // Decoding: one copy of Draco's portable positions, shifted in place.
+    for (int entry = 0; entry < num_entries_; ++entry) {
+      std::memcpy(positions_[entry].data(),
+                  pos_attribute_->GetAddress(pos_attribute_->mapped_index(
+                      entry_to_point_id_map_[entry])),
+                  sizeof(Pos));
+    }
+    ShiftPositions(
+        [&](int entry, int i) { return int64_t{positions_[entry][i]}; });
+    return;
+  }
+  std::vector<std::array<int64_t, 3>> values(num_entries_);
+  for (int entry = 0; entry < num_entries_; ++entry) {
+    pos_attribute_->ConvertValue(
+        pos_attribute_->mapped_index(entry_to_point_id_map_[entry]), 3,
+        values[entry].data());
+  }
+  ShiftPositions([&](int entry, int i) { return values[entry][i]; });
+}
+
+template <typename DataTypeT>
+template <class ValueT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::ShiftPositions(
+    ValueT value) {
+  // Each component minus its minimum; integer attributes of any width fit
+  // once shifted below 2^30.
+  int64_t min_value[3], max_value[3];
+  std::fill(min_value, min_value + 3, std::numeric_limits<int64_t>::max());
+  std::fill(max_value, max_value + 3, std::numeric_limits<int64_t>::lowest());
+  for (int entry = 0; entry < num_entries_; ++entry) {
+    for (int i = 0; i < 3; ++i) {
+      min_value[i] = std::min(min_value[i], value(entry, i));
+      max_value[i] = std::max(max_value[i], value(entry, i));
+    }
+  }
+  uint64_t range = 0;
+  for (int i = 0; i < 3 && num_entries_ > 0; ++i) {
+    range = std::max(range, static_cast<uint64_t>(max_value[i] - min_value[i]));
+  }
+  const int shift = std::max(0, BitLength(range) - 30);
+  for (int entry = 0; entry < num_entries_; ++entry) {
+    for (int i = 0; i < 3; ++i) {
+      positions_[entry][i] =
+          static_cast<int32_t>((value(entry, i) - min_value[i]) >> shift);
+    }
+  }
+}
+
+template <typename DataTypeT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::Start(
+    UvPredictorKind kind, const UvProcessingOrder &order) {
+  kind_ = kind;
+  order_ = &order;
+  num_entries_ = static_cast<int>(order.rank.size());
+  CachePositions();
+  magnitude_.assign(num_entries_, 0);
+  num_candidates_ = UsesReachStencil(kind) ? kAgreement : kNumCandidates;
+  recent_error_.fill(0);
+  last_orientation_ = 1;
+  step_orientation_sum_ = 0;
+}
+
+template <typename DataTypeT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::SelectStencils(
+    const Stencil *stencils, int num_stencils) {
+  stencils_ = stencils;
+  num_stencils_ = num_stencils;
+  if (num_stencils_ <= kMaxStencils) {
+    return;
+  }
+  // Row order differs between encoder and decoder: select by ranks.
+  const auto &rank = order_->rank;
+  selected_stencils_.assign(stencils_, stencils_ + num_stencils_);
+  std::nth_element(selected_stencils_.begin(),
+                   selected_stencils_.begin() + kMaxStencils,
+                   selected_stencils_.end(),
+                   [&](const Stencil &a, const Stencil &b) {
+                     const auto key = [&](const Stencil &s) {
+                       return std::make_tuple(
+                           rank[s.l], rank[s.r],
+                           s.b == UvCornerGraph::kNone ? -1 : rank[s.b]);
+                     };
+                     return key(a) < key(b);
+                   });
+  stencils_ = selected_stencils_.data();
+  num_stencils_ = kMaxStencils;
+}
+
+template <typename DataTypeT>
+int MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::OrientationFor(
+    const Uv &f, const Uv &g, bool has_b) {
+  // Face (O, L, R) has the orientation of face (B, R, L) across LR, whose
+  // UV area has the sign of -cross(f, g), f = vR - vL, g = vB - vL. Without
+  // B, the orientation the opposite vertices of earlier steps gave. (Within
+  // a step the stencils' order differs between encoder and decoder, so a
+  // step only accumulates and Update() takes the sign of the sum.)
+  if (has_b) {
+    const int64_t cross = f[0] * g[1] - f[1] * g[0];
+    if (cross != 0) {
+      const int orientation = cross > 0 ? -1 : 1;
+      step_orientation_sum_ += orientation;
+      return orientation;
+    }
+  }
+  return last_orientation_;
+}
+
+template <typename DataTypeT>
+UvComputedFrame
+MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::ComputeFrame(
+    const Stencil &stencil, int32_t tip) const {
+  const bool has_b = stencil.b != UvCornerGraph::kNone;
+  UvComputedFrame result;
+  result.usable = ComputeUvStencilFrame(
+      PositionOf(stencil.l), PositionOf(stencil.r), PositionOf(tip),
+      PositionOf(has_b ? stencil.b : stencil.l), has_b, &result.frame);
+  return result;
+}
+
+template <typename DataTypeT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::PredictStencil(
+    const Stencil &stencil, const UvComputedFrame &frame, const DataTypeT *data,
+    Uv *affine, Uv *similarity) {
+  const Uv uv_l = UvOf(data, stencil.l);
+  const Uv uv_r = UvOf(data, stencil.r);
+  const bool has_b = stencil.b != UvCornerGraph::kNone;
+  const Uv f = uv_r - uv_l;
+  const Uv g = has_b ? UvOf(data, stencil.b) - uv_l : Uv(0, 0);
+  // Checking f and g first also bounds the cross product in
+  // OrientationFor() below 2^41.
+  if (!IsSupportedUvDifference(f) || !IsSupportedUvDifference(g) ||
+      !frame.usable) {
+    *similarity = *affine = PredictMidpointQ16(uv_l, uv_r);
+    return;
+  }
+  *similarity = ClampPredictionQ16(
+      PredictSimilarityQ16(frame.frame, uv_l, f, OrientationFor(f, g, has_b)));
+  *affine = frame.frame.has_opposite
+                ? ClampPredictionQ16(PredictAffineQ16(frame.frame, uv_l, f, g))
+                : *similarity;
+}
+
+template <typename DataTypeT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::
+    ComputeCandidates(int32_t tip, const DataTypeT *data,
+                      const UvComputedFrame *frames) {
+  if (num_stencils_ == 1) {
+    ComputeCandidatesOfOneStencil(
+        frames != nullptr ? frames[0] : ComputeFrame(stencils_[0], tip), data);
+    return;
+  }
+  // The adaptive kinds need every candidate (for the errors they learn
+  // from); the agreement weight needs several stencils to matter.
+  const bool all_candidates = IsAdaptive();
+  const bool agreement = !UsesReachStencil(kind_);
+  Uv affine_sum(0, 0), similarity_sum(0, 0), parallelogram_sum(0, 0);
+  Uv agreement_sum(0, 0);
+  int64_t weight_sum = 0;
+  int num_parallelograms = 0;
+  for (int i = 0; i < num_stencils_; ++i) {
+    const Stencil &stencil = stencils_[i];
+    Uv affine, similarity;
+    PredictStencil(stencil,
+                   frames != nullptr ? frames[i] : ComputeFrame(stencil, tip),
+                   data, &affine, &similarity);
+    affine_sum = affine_sum + affine;
+    similarity_sum = similarity_sum + similarity;
+    if (all_candidates && stencil.b != UvCornerGraph::kNone) {
+      parallelogram_sum =
+          parallelogram_sum +
+          PredictParallelogramQ16(UvOf(data, stencil.l), UvOf(data, stencil.r),
+                                  UvOf(data, stencil.b));
+      ++num_parallelograms;
+    }
+    if (agreement) {
+      const int64_t weight = UvAgreementWeight(affine, similarity);
+      weight_sum += weight;
+      agreement_sum = agreement_sum + (affine + similarity) / 2 * weight;
+    }
+  }
+  candidates_[kMeanOfBoth] =
+      UvMeanOfQ16(affine_sum + similarity_sum, 2 * num_stencils_);
+  candidates_[kAgreement] =
+      agreement && weight_sum > 0
+          ? Uv(RoundedDivide(agreement_sum[0], weight_sum * kUvStencilOne),
+               RoundedDivide(agreement_sum[1], weight_sum * kUvStencilOne))
+          : candidates_[kMeanOfBoth];
+  if (!all_candidates) {
+    return;
+  }
+  candidates_[kAffineMean] = UvMeanOfQ16(affine_sum, num_stencils_);
+  candidates_[kSimilarityMean] = UvMeanOfQ16(similarity_sum, num_stencils_);
+  candidates_[kParallelogramMean] =
+      num_parallelograms > 0 ? UvMeanOfQ16(parallelogram_sum, num_parallelograms)
+                             : candidates_[kMeanOfBoth];
+}
+
+// ComputeCandidates() for a single stencil (every vertex of the reach kinds
+// that has one), without the sums: each mean is the stencil's own
+// prediction, the agreement-weighted mean is the mean of both (the weight
+// cancels: round(((a + s) / 2) w / (w 2^16)) = round(((a + s) / 2) / 2^16)),
+// and the parallelogram vL + vR - vB needs no rounding.
+template <typename DataTypeT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<
+    DataTypeT>::ComputeCandidatesOfOneStencil(const UvComputedFrame &frame,
+                                              const DataTypeT *data) {
+  const Stencil &stencil = stencils_[0];
+  Uv affine, similarity;
+  PredictStencil(stencil, frame, data, &affine, &similarity);
+  candidates_[kMeanOfBoth] = UvMeanOfQ16(affine + similarity, 2);
+  candidates_[kAgreement] = candidates_[kMeanOfBoth];
+  if (!IsAdaptive()) {
+    return;
+  }
+  candidates_[kAffineMean] = UvMeanOfQ16(affine, 1);
+  candidates_[kSimilarityMean] = UvMeanOfQ16(similarity, 1);
+  candidates_[kParallelogramMean] = stencil.b != UvCornerGraph::kNone
+                                        ? UvOf(data, stencil.l) +
+                                              UvOf(data, stencil.r) -
+                                              UvOf(data, stencil.b)
+                                        : candidates_[kMeanOfBoth];
+}
+
+template <typename DataTypeT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::ComputeFallback(
+    int step, const DataTypeT *data) {
+  // The latest known neighbour, else the previous entry, else zero.
+  int32_t source = step > 0 ? order_->entries[step - 1] : UvCornerGraph::kNone;
+  int32_t latest = -1;
+  for (int i = 0; i < num_neighbours_; ++i) {
+    const int32_t neighbour = neighbours_[i];
+    if (order_->rank[neighbour] > latest) {
+      latest = order_->rank[neighbour];
+      source = neighbour;
+    }
+  }
+  candidates_.fill(source == UvCornerGraph::kNone ? Uv(0, 0)
+                                                  : UvOf(data, source));
+}
+
+template <typename DataTypeT>
+int MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::ChooseCandidate()
+    const {
+  if (kind_ == UvPredictorKind::kAgreementWeighted) {
+    return kAgreement;
+  }
+  if (kind_ == UvPredictorKind::kReachMean) {
+    return kMeanOfBoth;
+  }
+  int best = kMeanOfBoth;
+  for (int k = 1; k < num_candidates_; ++k) {
+    if (recent_error_[k] < recent_error_[best]) {
+      best = k;
+    }
+  }
+  return best;
+}
+
+template <typename DataTypeT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::ComputeContext() {
+  const int count = num_neighbours_;
+  if (count == 0) {
+    context_ = kUvResidualNumContexts - 1;
+    return;
+  }
+  int64_t sum = 0;
+  for (int i = 0; i < count; ++i) {
+    sum += magnitude_[neighbours_[i]];
+  }
+  const uint64_t mean =
+      static_cast<uint64_t>(DivideBySmallCount(sum + count / 2, count));
+  context_ = std::min(kUvResidualNumContexts - 2, BitLength(mean));
+}
+
+template <typename DataTypeT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::Predict(
+    int step, const Stencil *stencils, int num_stencils,
+    const int32_t *neighbours, int num_neighbours, const DataTypeT *data,
+    const UvComputedFrame *frames) {
+  DRACO_DCHECK(frames == nullptr || num_stencils <= kMaxStencils);
+  SelectStencils(stencils, num_stencils);
+  neighbours_ = neighbours;
+  num_neighbours_ = num_neighbours;
+  if (num_stencils_ == 0) {
+    ComputeFallback(step, data);
+  } else {
+    ComputeCandidates(order_->entries[step], data, frames);
+  }
+  const Uv &chosen = candidates_[ChooseCandidate()];
+  for (int i = 0; i < kUvNumComponents; ++i) {
+    // The wrap transform clamps to the attribute's range afterwards.
+    predicted_value_[i] = static_cast<DataTypeT>(std::max<int64_t>(
+        std::numeric_limits<DataTypeT>::lowest(),
+        std::min<int64_t>(std::numeric_limits<DataTypeT>::max(), chosen[i])));
+  }
+  ComputeContext();
+}
+
+template <typename DataTypeT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::Update(
+    int step, const DataTypeT *data, const DataTypeT *correction) {
+  constexpr uint64_t kMaxError = uint64_t{1} << 20;
+  const int32_t tip = order_->entries[step];
+  const Uv value = UvOf(data, tip);
+  if (step_orientation_sum_ != 0) {
+    last_orientation_ = step_orientation_sum_ > 0 ? 1 : -1;
+    step_orientation_sum_ = 0;
+  }
+  magnitude_[tip] = static_cast<uint32_t>(
+      std::min<uint64_t>(std::numeric_limits<uint32_t>::max(),
+                         AbsAsUnsigned(correction[0]) +
+                             AbsAsUnsigned(correction[1])));
+  if (IsAdaptive()) {
+    // Exponentially decaying error sums (weight 15/16 per step): below
+    // 16 * 2^21.
+    for (int k = 0; k < num_candidates_; ++k) {
+      const Uv error = value - candidates_[k];
+      recent_error_[k] += std::min(AbsAsUnsigned(error[0]), kMaxError) +
+                          std::min(AbsAsUnsigned(error[1]), kMaxError) -
+                          recent_error_[k] / 16;
+    }
+  }
+}
+
+namespace uv_prediction_internal {
+
+// The face of |corner| as a stencil: its vertices known at entry |p| (below
+// |p| in Draco's order), kNone for the others. Returns the number of
+// stencils it makes, 1 when L and R are known and distinct, else 0.
+template <class MeshDataT>
+int StencilOfCorner(const MeshDataT &mesh_data, int p, CornerIndex corner,
+                    UvStencilPlan::Stencil *stencil) {
+  const auto &table = *mesh_data.corner_table();
+  const auto &vertex_to_entry = *mesh_data.vertex_to_data_map();
+  const auto known_entry = [&](CornerIndex c) -> int32_t {
+    if (c == kInvalidCornerIndex) {
+      return UvCornerGraph::kNone;
+    }
+    const VertexIndex v = table.Vertex(c);
+    if (v == kInvalidVertexIndex || v.value() >= vertex_to_entry.size()) {
+      return UvCornerGraph::kNone;
+    }
+    const int32_t entry = vertex_to_entry[v.value()];
+    return entry >= 0 && entry < p ? entry : UvCornerGraph::kNone;
+  };
+  *stencil = {known_entry(table.Next(corner)),
+              known_entry(table.Previous(corner)),
+              known_entry(table.Opposite(corner))};
+  return stencil->l != UvCornerGraph::kNone &&
+         stencil->r != UvCornerGraph::kNone && stencil->l != stencil->r;
+}
+
+// The stencil of the face through which Draco's traversal reached entry
+// |p|. When that face has none (Draco's traversal never crosses its start
+// face's third edge, so it may restart a chart next to known vertices), the
+// first face around the vertex that has one, swinging left then right up to
+// a boundary or a degenerate face; without any, the reach face's known
+// vertices. Returns the number of stencils, 0 or 1.
+template <class MeshDataT>
+int ReachStencil(const MeshDataT &mesh_data, int p,
+                 UvStencilPlan::Stencil *stencil) {
+  const auto &table = *mesh_data.corner_table();
+  const CornerIndex reach = (*mesh_data.data_to_corner_map())[p];
+  if (StencilOfCorner(mesh_data, p, reach, stencil)) {
+    return 1;
+  }
+  UvStencilPlan::Stencil other;
+  CornerIndex corner = table.SwingLeft(reach);
+  bool swinging_left = true;
+  for (int steps = 0; steps < table.num_corners() && corner != reach; ++steps) {
+    // Faces degenerate in the position connectivity are not coded (see
+    // BuildUvCornerGraph()): the decoder has a boundary there.
+    if (corner == kInvalidCornerIndex ||
+        table.IsDegenerated(table.Face(corner))) {
+      if (!swinging_left) {
+        break;
+      }
+      swinging_left = false;
+      corner = table.SwingRight(reach);
+      continue;
+    }
+    if (StencilOfCorner(mesh_data, p, corner, &other)) {
+      *stencil = other;
+      return 1;
+    }
+    corner = swinging_left ? table.SwingLeft(corner) : table.SwingRight(corner);
+  }
+  return 0;
+}
+
+// The known vertices of |stencil|, which are the neighbours of its tip.
+inline int KnownVerticesOf(const UvStencilPlan::Stencil &stencil,
+                           int32_t *vertices) {
+  int count = 0;
+  for (const int32_t entry : {stencil.l, stencil.r, stencil.b}) {
+    if (entry != UvCornerGraph::kNone) {
+      vertices[count++] = entry;
+    }
+  }
+  return count;
+}
+
+// What a step of Draco's order needs from the connectivity and the
+// positions alone, so that it can be computed ahead (UvLookahead).
+struct ReachStep {
+  UvStencilPlan::Stencil stencil;
+  UvComputedFrame frame;  // Of the stencil, if any.
+  int32_t num_stencils;
+};
+
+// Smallest number of items (steps or stencils) for which a second thread
+// computes them ahead. Starting a thread costs about as much as 400 steps,
+// but on the 2-core test VM attributes below a few thousand entries decoded
+// no faster with it (draco_uv_decode_bench), while those above 10k did.
+constexpr int kMinItemsForLookaheadThread = 8192;
+
+template <typename DataTypeT>
+bool UseLookaheadThread(
+    const MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT> &predictor,
+    int num_items) {
+  return predictor.max_threads() > 1 &&
+         num_items >= kMinItemsForLookaheadThread && UvSecondThreadAvailable();
+}
+
+template <typename DataTypeT, class MeshDataT>
+void ComputeReachSteps(
+    const MeshDataT &mesh_data,
+    const MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT> &predictor,
+    int begin, int end, ReachStep *out) {
+  for (int p = begin; p < end; ++p, ++out) {
+    out->num_stencils = ReachStencil(mesh_data, p, &out->stencil);
+    out->frame = out->num_stencils > 0 ? predictor.ComputeFrame(out->stencil, p)
+                                       : UvComputedFrame();
+  }
+}
+
+// RunUvPrediction() for the kinds that use the reach stencil: the stencils
+// and their frames are computed ahead, on a second thread if allowed.
+template <typename DataTypeT, class MeshDataT, class ProcessT>
+bool RunReachPrediction(
+    const MeshDataT &mesh_data, const UvPredictionConfig &config,
+    const DataTypeT *data,
+    MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT> *predictor,
+    ProcessT process) {
+  const auto &data_to_corner = *mesh_data.data_to_corner_map();
+  const int num_entries = static_cast<int>(data_to_corner.size());
+  UvProcessingOrder order;
+  BuildDataOrder(data_to_corner, &order);
+  predictor->Start(config.kind, order);
+  UvLookahead<ReachStep> steps(
+      num_entries, UseLookaheadThread(*predictor, num_entries),
+      [&](int begin, int end, ReachStep *out) {
+        ComputeReachSteps(mesh_data, *predictor, begin, end, out);
+      });
+  int32_t neighbours[3];
+  for (int p = 0; p < num_entries; ++p) {
+    const ReachStep &step = steps.Get(p);
+    predictor->Predict(p, &step.stencil, step.num_stencils, neighbours,
+                       KnownVerticesOf(step.stencil, neighbours), data,
+                       &step.frame);
+    if (!process(p, p)) {
+      return false;
+    }
+  }
+  return true;
+}
+
+// The frames of |plan|'s stencils |begin| .. |end|, whose tips are the
+// entries of |order|'s steps.
+template <typename DataTypeT>
+void ComputePlanFrames(
+    const UvStencilPlan &plan, const UvProcessingOrder &order,
+    const MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT> &predictor,
+    int begin, int end, UvComputedFrame *out) {
+  // The step of stencil |begin|: the last one whose row starts at or before.
+  int step =
+      static_cast<int>(std::upper_bound(plan.stencil_begin.begin(),
+                                        plan.stencil_begin.end(), begin) -
+                       plan.stencil_begin.begin()) -
+      1;
+  for (int i = begin; i < end; ++i) {
+    while (plan.stencil_begin[step + 1] <= i) {
+      ++step;
+    }
+    *out++ = predictor.ComputeFrame(plan.stencils[i], order.entries[step]);
+  }
+}
+
+// RunUvPrediction() for the kinds that use every stencil of a
+// UvStencilPlan: the stencils' frames are computed ahead, on a second
+// thread if allowed.
+template <typename DataTypeT, class MeshDataT, class ProcessT>
+bool RunPlanPrediction(
+    const MeshDataT &mesh_data, const UvPredictionConfig &config,
+    const DataTypeT *data,
+    MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT> *predictor,
+    ProcessT process) {
+  const auto &data_to_corner = *mesh_data.data_to_corner_map();
+  UvProcessingOrder order;
+  UvCornerGraph graph;
+  BuildUvCornerGraph(mesh_data, &graph);
+  if (config.max_degree_order) {
+    BuildMaxDegreeOrder(graph, data_to_corner, &order);
+  } else {
+    BuildDataOrder(data_to_corner, &order);
+  }
+  UvStencilPlan plan;
+  BuildUvStencilPlan(graph, order, &plan);
+  predictor->Start(config.kind, order);
+  const int num_stencils = static_cast<int>(plan.stencils.size());
+  UvLookahead<UvComputedFrame> frames(
+      num_stencils, UseLookaheadThread(*predictor, num_stencils),
+      [&](int begin, int end, UvComputedFrame *out) {
+        ComputePlanFrames(plan, order, *predictor, begin, end, out);
+      });
+  std::vector<UvComputedFrame> step_frames;
+  for (int step = 0; step < static_cast<int>(order.entries.size()); ++step) {
+    const int s0 = plan.stencil_begin[step], s1 = plan.stencil_begin[step + 1];
+    const int n0 = plan.neighbour_begin[step];
+    // Rows longer than kMaxStencils are cut by rank inside Predict().
+    const bool with_frames = s1 - s0 <= predictor->kMaxStencils;
+    step_frames.clear();
+    for (int i = s0; with_frames && i < s1; ++i) {
+      step_frames.push_back(frames.Get(i));
+    }
+    predictor->Predict(step, plan.stencils.data() + s0, s1 - s0,
+                       plan.neighbours.data() + n0,
+                       plan.neighbour_begin[step + 1] - n0, data,
+                       with_frames ? step_frames.data() : nullptr);
+    if (!process(step, order.entries[step])) {
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace uv_prediction_internal
+
+// Runs |predictor| over all entries of |mesh_data| as |config| says: builds
+// the processing order and the stencils, and for every step calls
+// Predict() and then |process|(step, entry), which must make the entry's
+// value available in |data| and call Update(), and may return false to
+// stop; RunUvPrediction() then returns false.
+template <typename DataTypeT, class MeshDataT, class ProcessT>
+bool RunUvPrediction(
+    const MeshDataT &mesh_data, const UvPredictionConfig &config,
+    const DataTypeT *data,
+    MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT> *predictor,
+    ProcessT process) {
+  if (UsesReachStencil(config.kind)) {
+    return uv_prediction_internal::RunReachPrediction(mesh_data, config, data,
+                                                      predictor, process);
+  }
+  return uv_prediction_internal::RunPlanPrediction(mesh_data, config, data,
+                                                   predictor, process);
+}
+
+}  // namespace draco
+
+#endif  // DRACO_EXT_WEIGHTED_MESH_PREDICTION_SCHEME_TEX_COORDS_WEIGHTED_PREDICTOR_H_

@@ -1,0 +1,117 @@
+// Copyright 2026 The draco-uv Authors.
+//
+// Licensed under the Apache License, Version 2.0 (the "License");
+// you may not use this file except in compliance with the License.
+// You may obtain a copy of the License at
+//
+//      http://www.apache.org/licenses/LICENSE-2.0
+//
+// Unless required by applicable law or agreed to in writing, software
+// distributed under the License is distributed on an "AS IS" BASIS,
+// WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+// See the License for the specific language governing permissions and
+// limitations under the License.
+//
+#include "draco_ext/options/uv_prediction_options.h"
+
+#include "gtest/gtest.h"
+#include "tests/draco_uv_test_utils.h"
+
+namespace draco {
+namespace {
+
+TEST(UvPredictionOptionsTest, ParsesEveryDocumentedName) {
+  for (const UvPredictionName &entry : UvPredictionNames()) {
+    const auto method = ParseUvPredictionName(entry.name);
+    ASSERT_TRUE(method.ok()) << entry.name;
+    EXPECT_EQ(method.value(), entry.method);
+    EXPECT_NE(UvPredictionUsage().find(entry.name), std::string::npos);
+  }
+  EXPECT_EQ(ParseUvPredictionName("weighted").value(),
+            MESH_PREDICTION_TEX_COORDS_WEIGHTED);
+  EXPECT_EQ(ParseUvPredictionName("portable").value(),
+            MESH_PREDICTION_TEX_COORDS_PORTABLE);
+  EXPECT_TRUE(IsAutoUvPrediction("auto"));
+}
+
+TEST(UvPredictionOptionsTest, RejectsUnknownNameListingValidNames) {
+  const auto method = ParseUvPredictionName("weigthed");
+  ASSERT_FALSE(method.ok());
+  const std::string message = method.status().error_msg_string();
+  EXPECT_NE(message.find("weigthed"), std::string::npos);
+  for (const UvPredictionName &entry : UvPredictionNames()) {
+    EXPECT_NE(message.find(entry.name), std::string::npos) << message;
+  }
+}
+
+class UvPredictionConfigureTest : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    auto mesh = ReadTestMesh(DracoTestdataPath("cube_att.obj"));
+    ASSERT_TRUE(mesh.ok());
+    mesh_ = std::move(mesh).value();
+  }
+  std::unique_ptr<Mesh> mesh_;
+};
+
+TEST_F(UvPredictionConfigureTest, DracoNameLeavesTheOutputUnchanged) {
+  const auto none = EncodeMeshToBytes(*mesh_, {14, 12, 10, ""});
+  const auto draco = EncodeMeshToBytes(*mesh_, {14, 12, 10, "draco"});
+  ASSERT_TRUE(none.ok() && draco.ok());
+  EXPECT_EQ(none.value(), draco.value());
+}
+
+TEST_F(UvPredictionConfigureTest, RejectsSequentialEncoding) {
+  const auto result = EncodeMeshToBytes(*mesh_, {14, 12, 0, "weighted"});
+  ASSERT_FALSE(result.ok());
+  EXPECT_NE(result.status().error_msg_string().find("-cl"), std::string::npos);
+}
+
+TEST_F(UvPredictionConfigureTest, RejectsUnquantizedTexCoords) {
+  EXPECT_FALSE(EncodeMeshToBytes(*mesh_, {14, 0, 10, "weighted"}).ok());
+}
+
+TEST_F(UvPredictionConfigureTest, RejectsQuantizationBeyondTheSupportedRange) {
+  const auto result = EncodeMeshToBytes(*mesh_, {14, 21, 10, "weighted"});
+  ASSERT_FALSE(result.ok());
+  EXPECT_NE(result.status().error_msg_string().find("-qt up to 20"),
+            std::string::npos);
+  EXPECT_TRUE(EncodeMeshToBytes(*mesh_, {14, 20, 10, "weighted"}).ok());
+  // auto simply leaves the scheme out.
+  EXPECT_TRUE(EncodeMeshToBytes(*mesh_, {14, 21, 10, "auto"}).ok());
+}
+
+TEST_F(UvPredictionConfigureTest, RejectsPointClouds) {
+  ExpertEncoder encoder(*mesh_);
+  EXPECT_FALSE(ConfigureUvPrediction("weighted", nullptr, &encoder).ok());
+}
+
+TEST_F(UvPredictionConfigureTest, SummaryNamesTheChosenScheme) {
+  ExpertEncoder encoder(*mesh_);
+  for (int i = 0; i < mesh_->num_attributes(); ++i) {
+    encoder.SetAttributeQuantization(i, 11);
+  }
+  const auto summary = ConfigureUvPrediction("weighted", mesh_.get(), &encoder);
+  ASSERT_TRUE(summary.ok()) << summary.status().error_msg();
+  EXPECT_NE(summary.value().find("TEX_COORD 0"), std::string::npos);
+  EXPECT_NE(summary.value().find("weighted"), std::string::npos);
+}
+
+// -uv_pred auto keeps stock Draco's choice among its candidates, so it can
+// never produce a larger file than stock at the same settings.
+TEST(UvPredictionAutoTest, IsNeverLargerThanStockOnDracoTestdata) {
+  for (const std::string &name : DracoTestdataTexturedMeshes()) {
+    const auto mesh = ReadTestMesh(DracoTestdataPath(name));
+    ASSERT_TRUE(mesh.ok()) << name;
+    for (const int cl : {7, 10}) {
+      const auto stock = EncodeMeshToBytes(*mesh.value(), {14, 10, cl, ""});
+      const auto automatic =
+          EncodeMeshToBytes(*mesh.value(), {14, 10, cl, "auto"});
+      ASSERT_TRUE(stock.ok() && automatic.ok()) << name;
+      EXPECT_LE(automatic.value().size(), stock.value().size()) << name;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace draco
