@@ -68,7 +68,8 @@ list(
          "${draco_uv_ext}/linalg/dense_front.cc"
          "${draco_uv_ext}/linalg/dense_front.h"
          "${draco_uv_ext}/linalg/dense_front_impl.h"
-         "${draco_uv_ext}/linalg/dense_front_portable.cc")
+         "${draco_uv_ext}/linalg/dense_front_portable.cc"
+         "${draco_uv_ext}/linalg/matrix_graph.h")
 
 # On x86-64, the Laplacian decoder's dense kernels also in an AVX2 and FMA
 # build, chosen at run time on CPUs that have both (dense_front.h).

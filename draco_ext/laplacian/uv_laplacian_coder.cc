@@ -56,7 +56,7 @@ class LaplacianSetup {
 
   // Computes everything below; |graph| and |boundary| come from
   // UvTextureGraph(mesh).
-  void Build(const UvLaplacianMesh &mesh, const UvMatrixGraph &graph,
+  void Build(const UvLaplacianMesh &mesh, const MatrixGraph &graph,
              std::vector<bool> boundary) {
     charts_ = ComputeUvCharts(mesh, UvMinChartSizeForSecondAnchor(kind_));
     boundary_ = std::move(boundary);
@@ -183,7 +183,7 @@ class LaplacianEncoder {
   // Encodes into |buffer|; false when the system is singular.
   bool Run(EncoderBuffer *buffer, UvValues *reconstruction) {
     std::vector<bool> boundary;
-    const UvMatrixGraph graph = UvTextureGraph(mesh_, &boundary);
+    const MatrixGraph graph = UvTextureGraph(mesh_, &boundary);
     auto build_operator = [&] {
       setup_.Build(mesh_, graph, std::move(boundary));
       QuantizeResiduals();
@@ -564,14 +564,14 @@ bool DecodeUvLaplacian(const UvLaplacianMesh &mesh, DecoderBuffer *buffer,
     return false;
   }
   std::vector<bool> boundary;
-  const UvMatrixGraph graph = UvTextureGraph(mesh, &boundary);
+  const MatrixGraph graph = UvTextureGraph(mesh, &boundary);
   LaplacianSetup setup(kind);
   auto build_operator = [&] {
     setup.Build(mesh, graph, std::move(boundary));
     return &setup.op();
   };
   UvLaplacianSystem system;
-  system.set_dense_kernels(UvDenseKernels::kFastestHere);
+  system.set_dense_kernels(DenseKernels::kFastestHere);
   if (!system.Analyze(graph, UvLaplacianMaxFactorEntries(n), build_operator)) {
     return false;
   }

@@ -35,7 +35,7 @@ bool HasDistinctCorners(const std::array<int, 3> &face) {
 
 // Slot of neighbour |j| of |i| in |graph| (sorted rows); j must be a
 // neighbour.
-int Slot(const UvMatrixGraph &graph, int i, int j) {
+int Slot(const MatrixGraph &graph, int i, int j) {
   const auto begin = graph.neighbour.begin();
   return static_cast<int>(
       std::lower_bound(begin + graph.start[i], begin + graph.start[i + 1], j) -
@@ -113,7 +113,7 @@ struct RowWeights {
 };
 
 RowWeights ComputeRowWeights(const UvLaplacianMesh &mesh,
-                             const UvMatrixGraph &graph, UvLaplacianKind kind) {
+                             const MatrixGraph &graph, UvLaplacianKind kind) {
   RowWeights rows;
   rows.weight.assign(graph.neighbour.size(),
                      kind == UvLaplacianKind::kTutte ? 1.0 : 0.0);
@@ -158,7 +158,7 @@ RowWeights ComputeRowWeights(const UvLaplacianMesh &mesh,
 // of every edge slot of |graph|, faces with repeated corners included,
 // which are taken out here (they are not part of the texture connectivity).
 std::vector<bool> BoundaryFromEdgeUses(const UvLaplacianMesh &mesh,
-                                       const UvMatrixGraph &graph,
+                                       const MatrixGraph &graph,
                                        std::vector<int> uses) {
   for (const auto &face : mesh.faces) {
     if (HasDistinctCorners(face)) {
@@ -185,10 +185,10 @@ std::vector<bool> BoundaryFromEdgeUses(const UvLaplacianMesh &mesh,
 
 }  // namespace
 
-UvMatrixGraph UvTextureGraph(const UvLaplacianMesh &mesh,
-                             std::vector<bool> *boundary) {
+MatrixGraph UvTextureGraph(const UvLaplacianMesh &mesh,
+                           std::vector<bool> *boundary) {
   const int n = mesh.num_vertices();
-  UvMatrixGraph graph;
+  MatrixGraph graph;
   std::vector<int> &start = graph.start;
   std::vector<int> &neighbour = graph.neighbour;
   start.assign(n + 1, 0);
@@ -287,7 +287,7 @@ UvCharts ComputeUvCharts(const UvLaplacianMesh &mesh,
 }
 
 void UvLaplacianOperator::Build(const UvLaplacianMesh &mesh,
-                                const UvMatrixGraph &graph,
+                                const MatrixGraph &graph,
                                 UvLaplacianKind kind) {
   const RowWeights rows = ComputeRowWeights(mesh, graph, kind);
   num_fallback_rows_ = 0;

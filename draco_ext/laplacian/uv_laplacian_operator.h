@@ -34,7 +34,7 @@
 
 #include <Eigen/Core>
 
-#include "draco_ext/linalg/sparse_cholesky.h"
+#include "draco_ext/linalg/matrix_graph.h"
 
 namespace draco {
 
@@ -94,8 +94,8 @@ int UvMinChartSizeForSecondAnchor(UvLaplacianKind kind);
 // not null, receives the texture vertices on the boundary of the texture
 // connectivity: those with an edge that is not shared by exactly two faces
 // with distinct corners (counted while the neighbour lists are compacted).
-UvMatrixGraph UvTextureGraph(const UvLaplacianMesh &mesh,
-                             std::vector<bool> *boundary = nullptr);
+MatrixGraph UvTextureGraph(const UvLaplacianMesh &mesh,
+                           std::vector<bool> *boundary = nullptr);
 
 UvCharts ComputeUvCharts(const UvLaplacianMesh &mesh,
                          int min_size_for_second_anchor);
@@ -107,7 +107,7 @@ class UvLaplacianOperator {
  public:
   // Row i has the diagonal, then the neighbours of i in |graph|, which must
   // be UvTextureGraph(mesh).
-  void Build(const UvLaplacianMesh &mesh, const UvMatrixGraph &graph,
+  void Build(const UvLaplacianMesh &mesh, const MatrixGraph &graph,
              UvLaplacianKind kind);
 
   int num_rows() const { return static_cast<int>(row_start_.size()) - 1; }

@@ -59,10 +59,10 @@ Transposed Transpose(const UvLaplacianOperator &op) {
 
 // L^T L, both triangles, by column; every column starts with its diagonal
 // entry, zero for vertices without faces, so that anchors can be added.
-UvSymmetricMatrix NormalMatrix(const UvLaplacianOperator &op,
-                               const Transposed &t) {
+SymmetricMatrix NormalMatrix(const UvLaplacianOperator &op,
+                             const Transposed &t) {
   const int n = op.num_rows();
-  UvSymmetricMatrix m;
+  SymmetricMatrix m;
   m.size = n;
   m.column_start.reserve(n + 1);
   m.column_start.assign(1, 0);
@@ -106,7 +106,7 @@ UvSymmetricMatrix NormalMatrix(const UvLaplacianOperator &op,
 // An upper bound of the entries of L^T L, to refuse pathological
 // connectivity before building it; |graph| is the operator's pattern
 // without the diagonal.
-int64_t NormalMatrixBound(const UvMatrixGraph &graph) {
+int64_t NormalMatrixBound(const MatrixGraph &graph) {
   int64_t bound = 0;
   for (int u = 0; u < graph.size(); ++u) {
     const int64_t degree = graph.start[u + 1] - graph.start[u];
@@ -117,7 +117,7 @@ int64_t NormalMatrixBound(const UvMatrixGraph &graph) {
 }
 
 // Adds |delta| to the diagonal entry of column |u| (NormalMatrix()).
-void AddToDiagonalEntry(UvSymmetricMatrix *m, int u, double delta) {
+void AddToDiagonalEntry(SymmetricMatrix *m, int u, double delta) {
   DRACO_DCHECK_EQ(m->row[m->column_start[u]], u);
   m->value[m->column_start[u]] += delta;
 }
@@ -136,7 +136,7 @@ double MaxFactorFlops(int num_unknowns) {
 }  // namespace
 
 bool UvLaplacianSystem::Analyze(
-    const UvMatrixGraph &graph, int64_t max_factor_entries,
+    const MatrixGraph &graph, int64_t max_factor_entries,
     const std::function<const UvLaplacianOperator *()> &build_operator) {
   op_ = nullptr;
   if (NormalMatrixBound(graph) > max_factor_entries) {
@@ -156,7 +156,7 @@ bool UvLaplacianSystem::Analyze(
 bool UvLaplacianSystem::Factorize(const std::vector<int> &anchors) {
   DRACO_DCHECK(op_ != nullptr);
   anchors_ = anchors;
-  UvSymmetricMatrix m = std::move(normal_);
+  SymmetricMatrix m = std::move(normal_);
   for (const int a : anchors) {
     AddToDiagonalEntry(&m, a, kAnchorWeight * kAnchorWeight);
   }

@@ -19,7 +19,7 @@
 // the Laplacian rows L (uv_laplacian_operator.h) stacked on one identity
 // row per anchor (the rectangular L* of the paper). Solved through
 // the normal equations (L^T L + E E^T) x = L^T r + E x^, factorised once by
-// UvSparseCholesky.
+// SparseCholesky.
 //
 // Normal equations rather than a sparse QR of L*: on the corpus meshes
 // Eigen's SparseQR was 20-60 times slower than Cholesky of L^T L for the
@@ -53,7 +53,7 @@ class UvLaplacianSystem {
   // |max_factor_entries| or its factorisation would take more than about
   // 1024 n^1.5 flops (n unknowns; see uv_laplacian_system.cc).
   bool Analyze(
-      const UvMatrixGraph &graph, int64_t max_factor_entries,
+      const MatrixGraph &graph, int64_t max_factor_entries,
       const std::function<const UvLaplacianOperator *()> &build_operator);
 
   // Factorises the normal equations with anchors at the distinct texture
@@ -65,7 +65,7 @@ class UvLaplacianSystem {
   // The factorisation's dense kernels (dense_front.h): portable by
   // default; decoders may take the fastest, as their output is not
   // predicted from.
-  void set_dense_kernels(UvDenseKernels kernels) {
+  void set_dense_kernels(DenseKernels kernels) {
     cholesky_.set_dense_kernels(kernels);
   }
 
@@ -82,9 +82,9 @@ class UvLaplacianSystem {
 
  private:
   const UvLaplacianOperator *op_ = nullptr;
-  UvSymmetricMatrix normal_;  // L^T L between Analyze() and Factorize().
+  SymmetricMatrix normal_;  // L^T L between Analyze() and Factorize().
   std::vector<int> anchors_;
-  UvSparseCholesky cholesky_;
+  SparseCholesky cholesky_;
 };
 
 }  // namespace draco

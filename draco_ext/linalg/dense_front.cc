@@ -20,10 +20,10 @@
 namespace draco {
 
 // dense_front_portable.cc.
-extern const UvDenseFrontSteps kUvDenseFrontStepsPortable;
+extern const DenseFrontSteps kDenseFrontStepsPortable;
 #ifdef DRACO_UV_DENSE_FRONT_AVX2
 // dense_front_avx2.cc.
-extern const UvDenseFrontSteps kUvDenseFrontStepsAvx2;
+extern const DenseFrontSteps kDenseFrontStepsAvx2;
 #endif
 
 namespace {
@@ -32,18 +32,18 @@ namespace {
 // r = m - k) are split in two jobs each: 2^25, about 2 ms.
 constexpr double kMinSplitFlops = 33554432.0;
 
-const UvDenseFrontSteps &ChooseSteps(UvDenseKernels kernels) {
+const DenseFrontSteps &ChooseSteps(DenseKernels kernels) {
 #ifdef DRACO_UV_DENSE_FRONT_AVX2
-  if (kernels == UvDenseKernels::kFastestHere && UvDenseKernelsUseAvx2()) {
-    return kUvDenseFrontStepsAvx2;
+  if (kernels == DenseKernels::kFastestHere && DenseKernelsUseAvx2()) {
+    return kDenseFrontStepsAvx2;
   }
 #endif
-  return kUvDenseFrontStepsPortable;
+  return kDenseFrontStepsPortable;
 }
 
 }  // namespace
 
-bool UvDenseKernelsUseAvx2() {
+bool DenseKernelsUseAvx2() {
 #ifdef DRACO_UV_DENSE_FRONT_AVX2
   static const bool has_avx2 =
       __builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma");
@@ -53,9 +53,9 @@ bool UvDenseKernelsUseAvx2() {
 #endif
 }
 
-bool UvFactorDenseFront(UvDenseKernels kernels, double *panel, int m, int k,
-                        double *update, const UvForkJoin *fork_join) {
-  const UvDenseFrontSteps &steps = ChooseSteps(kernels);
+bool FactorDenseFront(DenseKernels kernels, double *panel, int m, int k,
+                      double *update, const ForkJoin *fork_join) {
+  const DenseFrontSteps &steps = ChooseSteps(kernels);
   if (k == 0) {
     return true;
   }

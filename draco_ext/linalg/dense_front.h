@@ -30,7 +30,7 @@
 
 namespace draco {
 
-enum class UvDenseKernels {
+enum class DenseKernels {
   kPortable,     // The same result on every CPU of the architecture.
   kFastestHere,  // AVX2 and FMA where the CPU has them, else portable.
 };
@@ -38,7 +38,7 @@ enum class UvDenseKernels {
 // Runs two independent jobs, one after the other or at once.
 typedef std::function<void(const std::function<void()> &,
                            const std::function<void()> &)>
-    UvForkJoin;
+    ForkJoin;
 
 // Partial factorisation of a front [F11 .; F21 F22] (F11 k x k):
 //   L11 L11^T = F11,   L21 = F21 L11^-T,   update += -L21 L21^T.
@@ -50,11 +50,11 @@ typedef std::function<void(const std::function<void()> &,
 // columns into two jobs each, which |fork_join| may run at once (without
 // it, one after the other). The split depends on m and k alone, so the
 // result does not depend on |fork_join|.
-bool UvFactorDenseFront(UvDenseKernels kernels, double *panel, int m, int k,
-                        double *update, const UvForkJoin *fork_join = nullptr);
+bool FactorDenseFront(DenseKernels kernels, double *panel, int m, int k,
+                      double *update, const ForkJoin *fork_join = nullptr);
 
-// The steps of UvFactorDenseFront() in one build of the kernels.
-struct UvDenseFrontSteps {
+// The steps of FactorDenseFront() in one build of the kernels.
+struct DenseFrontSteps {
   // L11 L11^T = F11; false when F11 is not numerically positive definite.
   bool (*factor_diagonal)(double *panel, int m, int k);
   // L21 = F21 L11^-T for the rows begin .. end - 1 of F21.
@@ -66,7 +66,7 @@ struct UvDenseFrontSteps {
 };
 
 // True when kFastestHere uses the AVX2 build on this CPU.
-bool UvDenseKernelsUseAvx2();
+bool DenseKernelsUseAvx2();
 
 }  // namespace draco
 

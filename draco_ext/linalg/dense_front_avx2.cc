@@ -12,7 +12,7 @@
 // See the License for the specific language governing permissions and
 // limitations under the License.
 //
-// The AVX2 and FMA build of UvFactorDenseFront()'s steps, compiled with -mavx2
+// The AVX2 and FMA build of FactorDenseFront()'s steps, compiled with -mavx2
 // -mfma (cmake/draco_uv_extension.cmake) and called only on CPUs that have
 // both.
 //
@@ -29,6 +29,6 @@
 
 namespace draco {
 
-extern const UvDenseFrontSteps kUvDenseFrontStepsAvx2 = kEigenDenseFrontSteps;
+extern const DenseFrontSteps kDenseFrontStepsAvx2 = kEigenDenseFrontSteps;
 
 }  // namespace draco

@@ -12,7 +12,7 @@
 // See the License for the specific language governing permissions and
 // limitations under the License.
 //
-// The steps of UvFactorDenseFront() (dense_front.h), included by each
+// The steps of FactorDenseFront() (dense_front.h), included by each
 // of its builds after Eigen, which each build renames. Internal linkage, so
 // that every build keeps its own copy.
 #ifndef DRACO_EXT_LINALG_DENSE_FRONT_IMPL_H_
@@ -96,7 +96,7 @@ void UpdateDenseColumns(const double *panel_data, int m, int k,
   }
 }
 
-constexpr UvDenseFrontSteps kEigenDenseFrontSteps = {
+constexpr DenseFrontSteps kEigenDenseFrontSteps = {
     FactorDenseDiagonal, SolveDenseRows, UpdateDenseColumns};
 
 }  // namespace

@@ -12,7 +12,7 @@
 // See the License for the specific language governing permissions and
 // limitations under the License.
 //
-// The portable build of UvFactorDenseFront()'s steps, for the baseline
+// The portable build of FactorDenseFront()'s steps, for the baseline
 // instruction set.
 //
 // Eigen is renamed here so that the fixed cache sizes this build sets
@@ -26,7 +26,6 @@
 
 namespace draco {
 
-extern const UvDenseFrontSteps kUvDenseFrontStepsPortable =
-    kEigenDenseFrontSteps;
+extern const DenseFrontSteps kDenseFrontStepsPortable = kEigenDenseFrontSteps;
 
 }  // namespace draco

@@ -54,9 +54,9 @@ constexpr double kMaxTaskShare = 1.0 / 64;
 // a pseudo-peripheral point, or a cut across the structure's longest
 // extent), thinned. Points are appended to |order| children first, so that the
 // order in which nodes are created is a postorder of the dissection tree.
-class UvSparseCholesky::Dissection {
+class SparseCholesky::Dissection {
  public:
-  explicit Dissection(const UvMatrixGraph &graph)
+  explicit Dissection(const MatrixGraph &graph)
       : graph_(graph),
         marks_(graph.size()),
         distance_(graph.size(), 0),
@@ -407,7 +407,7 @@ class UvSparseCholesky::Dissection {
     }
   }
 
-  const UvMatrixGraph &graph_;
+  const MatrixGraph &graph_;
   // Per point its subset's label and the stamp of the last search that
   // reached it, side by side: a search reads both.
   struct Mark {
@@ -423,15 +423,14 @@ class UvSparseCholesky::Dissection {
   int next_stamp_ = 0;
 };
 
-bool UvSparseCholesky::Analyze(const UvMatrixGraph &graph, int64_t max_entries,
-                               const std::function<void()> &work) {
+bool SparseCholesky::Analyze(const MatrixGraph &graph, int64_t max_entries,
+                             const std::function<void()> &work) {
   bool ok = false;
   RunBoth(work, [&] { ok = Analyze(graph, max_entries); });
   return ok;
 }
 
-bool UvSparseCholesky::Analyze(const UvMatrixGraph &graph,
-                               int64_t max_entries) {
+bool SparseCholesky::Analyze(const MatrixGraph &graph, int64_t max_entries) {
   const int n = graph.size();
   nodes_.clear();
   unknown_of_.clear();
@@ -478,7 +477,7 @@ bool UvSparseCholesky::Analyze(const UvMatrixGraph &graph,
   return true;
 }
 
-bool UvSparseCholesky::ComputeUpdateRows(const UvMatrixGraph &graph) {
+bool SparseCholesky::ComputeUpdateRows(const MatrixGraph &graph) {
   // A node updates the later columns coupled to its own (at most two edges
   // away) and those its children update. A child's update row before the
   // node's own columns would belong to a sibling subtree, which the
@@ -528,8 +527,8 @@ bool UvSparseCholesky::ComputeUpdateRows(const UvMatrixGraph &graph) {
   return true;
 }
 
-void UvSparseCholesky::FrontColumns(const Node &node,
-                                    std::vector<int> *columns) const {
+void SparseCholesky::FrontColumns(const Node &node,
+                                  std::vector<int> *columns) const {
   columns->resize(node.front_size());
   for (int i = 0; i < node.num_columns; ++i) {
     (*columns)[i] = node.first_column + i;
@@ -538,18 +537,18 @@ void UvSparseCholesky::FrontColumns(const Node &node,
             columns->begin() + node.num_columns);
 }
 
-Eigen::Map<Eigen::MatrixXd> UvSparseCholesky::Panel(const Node &node) {
+Eigen::Map<Eigen::MatrixXd> SparseCholesky::Panel(const Node &node) {
   return Eigen::Map<Eigen::MatrixXd>(panels_.get() + node.panel_offset,
                                      node.front_size(), node.num_columns);
 }
 
-Eigen::Map<const Eigen::MatrixXd> UvSparseCholesky::Panel(
+Eigen::Map<const Eigen::MatrixXd> SparseCholesky::Panel(
     const Node &node) const {
   return Eigen::Map<const Eigen::MatrixXd>(panels_.get() + node.panel_offset,
                                            node.front_size(), node.num_columns);
 }
 
-bool UvSparseCholesky::Factorize(const UvSymmetricMatrix &matrix) {
+bool SparseCholesky::Factorize(const SymmetricMatrix &matrix) {
   if (matrix.size != num_unknowns()) {
     return false;
   }
@@ -562,7 +561,7 @@ bool UvSparseCholesky::Factorize(const UvSymmetricMatrix &matrix) {
   // Every front's arithmetic and its children's order are fixed, so the
   // factor does not depend on which thread runs which task, or when.
   auto run_task = [&](const FactorTask &task, std::vector<int> *front_index,
-                      std::vector<int> *columns, const UvForkJoin *fork_join) {
+                      std::vector<int> *columns, const ForkJoin *fork_join) {
     for (int n = task.first_node; n <= task.last_node; ++n) {
       if (!FactorizeNode(matrix, n, front_index, columns, &updates,
                          fork_join)) {
@@ -583,7 +582,7 @@ bool UvSparseCholesky::Factorize(const UvSymmetricMatrix &matrix) {
 // are done, and parents go first (they are on the longest path). A worker
 // that splits a large front offers one half of each step to the other
 // (ForkJoin()), which takes it while waiting for a task.
-class UvSparseCholesky::TaskQueue {
+class SparseCholesky::TaskQueue {
  public:
   explicit TaskQueue(const std::vector<FactorTask> &tasks)
       : tasks_(tasks), pending_(tasks.size(), 0), num_left_(tasks.size()) {
@@ -679,10 +678,10 @@ class UvSparseCholesky::TaskQueue {
 };
 
 template <typename RunTask>
-bool UvSparseCholesky::RunFactorTasks(const RunTask &run_task) const {
+bool SparseCholesky::RunFactorTasks(const RunTask &run_task) const {
   TaskQueue queue(factor_tasks_);
-  const UvForkJoin fork_join = [&](const std::function<void()> &a,
-                                   const std::function<void()> &b) {
+  const ForkJoin fork_join = [&](const std::function<void()> &a,
+                                 const std::function<void()> &b) {
     queue.ForkJoin(a, b);
   };
   auto worker = [&] {
@@ -697,12 +696,12 @@ bool UvSparseCholesky::RunFactorTasks(const RunTask &run_task) const {
   return queue.ok();
 }
 
-bool UvSparseCholesky::MayUseSecondThread() const {
+bool SparseCholesky::MayUseSecondThread() const {
   return max_threads_ > 1 && UvSecondThreadAvailable();
 }
 
 template <typename Side, typename Other>
-void UvSparseCholesky::RunBoth(const Side &side, const Other &other) const {
+void SparseCholesky::RunBoth(const Side &side, const Other &other) const {
   if (!MayUseSecondThread()) {
     side();
     other();
@@ -713,7 +712,7 @@ void UvSparseCholesky::RunBoth(const Side &side, const Other &other) const {
   worker.join();
 }
 
-void UvSparseCholesky::ChooseFactorTasks() {
+void SparseCholesky::ChooseFactorTasks() {
   const int num_nodes = static_cast<int>(nodes_.size());
   std::vector<double> subtree(num_nodes);
   double total = 0;
@@ -753,7 +752,7 @@ void UvSparseCholesky::ChooseFactorTasks() {
   }
 }
 
-void UvSparseCholesky::ChooseSolveSubtrees() {
+void SparseCholesky::ChooseSolveSubtrees() {
   // Solve() reads every entry of the factor once per pass.
   const int num_nodes = static_cast<int>(nodes_.size());
   std::vector<int64_t> subtree(num_nodes);
@@ -787,11 +786,10 @@ void UvSparseCholesky::ChooseSolveSubtrees() {
   std::reverse(solve_roots_.begin(), solve_roots_.end());
 }
 
-bool UvSparseCholesky::FactorizeNode(
-    const UvSymmetricMatrix &matrix, int n, std::vector<int> *front_index_ptr,
+bool SparseCholesky::FactorizeNode(
+    const SymmetricMatrix &matrix, int n, std::vector<int> *front_index_ptr,
     std::vector<int> *columns_ptr,
-    std::vector<std::vector<double>> *updates_ptr,
-    const UvForkJoin *fork_join) {
+    std::vector<std::vector<double>> *updates_ptr, const ForkJoin *fork_join) {
   std::vector<int> &front_index = *front_index_ptr;
   std::vector<int> &columns = *columns_ptr;
   std::vector<std::vector<double>> &updates = *updates_ptr;
@@ -845,12 +843,12 @@ bool UvSparseCholesky::FactorizeNode(
   }
   // Dense partial factorisation: L11 L11^T = F11, L21 = F21 L11^-T,
   // update = F22 - L21 L21^T.
-  return UvFactorDenseFront(dense_kernels_, panel.data(), m, k, update.data(),
-                            fork_join);
+  return FactorDenseFront(dense_kernels_, panel.data(), m, k, update.data(),
+                          fork_join);
 }
 
-void UvSparseCholesky::UpdateColumn(Node &node, int local,
-                                    std::vector<double> *w) {
+void SparseCholesky::UpdateColumn(Node &node, int local,
+                                  std::vector<double> *w) {
   const int column = node.first_column + local;
   const double x = (*w)[column];
   if (x == 0.0) {
@@ -874,7 +872,7 @@ void UvSparseCholesky::UpdateColumn(Node &node, int local,
   }
 }
 
-void UvSparseCholesky::AddToDiagonal(int unknown, double delta) {
+void SparseCholesky::AddToDiagonal(int unknown, double delta) {
   // [Gill et al. 1974] method C1 along the elimination path: within a front
   // every later column depends on the current one, and a front's last
   // column hands over to its first update row.
@@ -894,9 +892,9 @@ void UvSparseCholesky::AddToDiagonal(int unknown, double delta) {
   }
 }
 
-void UvSparseCholesky::ForwardNode(const Node &node, Eigen::MatrixXd *y,
-                                   Eigen::MatrixXd *outside, int outside_begin,
-                                   Eigen::MatrixXd *gathered) const {
+void SparseCholesky::ForwardNode(const Node &node, Eigen::MatrixXd *y,
+                                 Eigen::MatrixXd *outside, int outside_begin,
+                                 Eigen::MatrixXd *gathered) const {
   const int k = node.num_columns;
   if (k == 0) {
     return;
@@ -928,8 +926,8 @@ void UvSparseCholesky::ForwardNode(const Node &node, Eigen::MatrixXd *y,
   }
 }
 
-void UvSparseCholesky::BackwardNode(const Node &node, Eigen::MatrixXd *y,
-                                    Eigen::MatrixXd *gathered) const {
+void SparseCholesky::BackwardNode(const Node &node, Eigen::MatrixXd *y,
+                                  Eigen::MatrixXd *gathered) const {
   const int k = node.num_columns;
   if (k == 0) {
     return;
@@ -953,7 +951,7 @@ void UvSparseCholesky::BackwardNode(const Node &node, Eigen::MatrixXd *y,
 }
 
 // How far one thread of Solve() has got, for the other to wait on.
-class UvSparseCholesky::SolveProgress {
+class SparseCholesky::SolveProgress {
  public:
   void Advance(int value) {
     std::lock_guard<std::mutex> lock(mutex_);
@@ -972,7 +970,7 @@ class UvSparseCholesky::SolveProgress {
   int value_ = 0;
 };
 
-void UvSparseCholesky::Solve(Eigen::Ref<Eigen::MatrixXd> rhs) const {
+void SparseCholesky::Solve(Eigen::Ref<Eigen::MatrixXd> rhs) const {
   const int num_rhs = static_cast<int>(rhs.cols());
   Eigen::MatrixXd y(num_unknowns(), num_rhs);
   for (int u = 0; u < num_unknowns(); ++u) {
@@ -1016,9 +1014,9 @@ void UvSparseCholesky::Solve(Eigen::Ref<Eigen::MatrixXd> rhs) const {
   }
 }
 
-void UvSparseCholesky::ForwardOtherNodes(Eigen::MatrixXd *y,
-                                         const Eigen::MatrixXd &outside,
-                                         SolveProgress *progress) const {
+void SparseCholesky::ForwardOtherNodes(Eigen::MatrixXd *y,
+                                       const Eigen::MatrixXd &outside,
+                                       SolveProgress *progress) const {
   Eigen::MatrixXd gathered;
   for (int n = 0; n < num_nodes(); ++n) {
     if (in_solve_side_[n]) {
@@ -1036,8 +1034,8 @@ void UvSparseCholesky::ForwardOtherNodes(Eigen::MatrixXd *y,
   }
 }
 
-void UvSparseCholesky::BackwardOtherNodes(Eigen::MatrixXd *y,
-                                          SolveProgress *progress) const {
+void SparseCholesky::BackwardOtherNodes(Eigen::MatrixXd *y,
+                                        SolveProgress *progress) const {
   Eigen::MatrixXd gathered;
   for (int n = num_nodes() - 1; n >= 0; --n) {
     if (!in_solve_side_[n]) {

@@ -57,26 +57,27 @@
 #include <Eigen/Core>
 
 #include "draco_ext/linalg/dense_front.h"
+#include "draco_ext/linalg/matrix_graph.h"
 
 namespace draco {
 
 // A symmetric sparse matrix, both triangles, compressed by column.
-struct UvSymmetricMatrix {
+struct SymmetricMatrix {
   int size = 0;
   std::vector<int> column_start;  // size + 1 entries.
   std::vector<int> row;
   std::vector<double> value;
 };
 
-// The graph of a symmetric matrix's pattern, compressed (neighbours of
-// unknown u are neighbour[start[u]] .. neighbour[start[u + 1] - 1]).
-struct UvMatrixGraph {
-  std::vector<int> start;
-  std::vector<int> neighbour;
-  int size() const { return static_cast<int>(start.size()) - 1; }
-};
-
-class UvSparseCholesky {
+// Solves symmetric positive definite systems M X = B whose pattern is the
+// square of a graph: Analyze() once per pattern, Factorize() per matrix of
+// that pattern, then Solve() and AddToDiagonal() any number of times.
+// Results are deterministic (file comment). Weak where: no pivoting, so an
+// indefinite or nearly singular M fails Factorize() or solves inaccurately;
+// the order is tuned for mesh-like graphs of low degree, and dense or
+// expander-like graphs give large fronts (bounded only by Analyze()'s
+// |max_entries|); one object must not be used from two threads at once.
+class SparseCholesky {
  public:
   // Orders the unknowns and computes the structure of the factor for
   // matrices whose off-diagonal entry (u, v) may be non-zero only when u and
@@ -85,10 +86,10 @@ class UvSparseCholesky {
   // for a mesh Laplacian and its one-ring graph. False, before allocating
   // the factor, when it would have more than |max_entries| entries. Large
   // graphs are dissected on two threads, to the same order as on one.
-  bool Analyze(const UvMatrixGraph &graph, int64_t max_entries);
+  bool Analyze(const MatrixGraph &graph, int64_t max_entries);
   // Analyze(), running |work| meanwhile on a second thread when allowed
   // (else first), e.g. to build the matrix during the ordering.
-  bool Analyze(const UvMatrixGraph &graph, int64_t max_entries,
+  bool Analyze(const MatrixGraph &graph, int64_t max_entries,
                const std::function<void()> &work);
 
   // Factorises |matrix| (pattern as analysed). False when the matrix is not
@@ -97,14 +98,14 @@ class UvSparseCholesky {
   // between two threads as they become ready; every front's arithmetic is
   // the same as on one thread, so the factor is bit-identical whatever the
   // thread count and timing.
-  bool Factorize(const UvSymmetricMatrix &matrix);
+  bool Factorize(const SymmetricMatrix &matrix);
 
   // At most 2 (the default) or 1 thread for Analyze(), Factorize() and
   // Solve(); their results do not depend on it.
   void set_max_threads(int max_threads) { max_threads_ = max_threads; }
   // The dense kernels of Factorize(), portable by default
   // (dense_front.h).
-  void set_dense_kernels(UvDenseKernels kernels) { dense_kernels_ = kernels; }
+  void set_dense_kernels(DenseKernels kernels) { dense_kernels_ = kernels; }
 
   // Replaces the factor of M by the factor of M + delta e_u e_u^T (rank-one
   // update, delta >= 0), touching only the columns on the elimination path
@@ -159,16 +160,16 @@ class UvSparseCholesky {
   }
 
   // False when a child updates a column of a sibling subtree.
-  bool ComputeUpdateRows(const UvMatrixGraph &graph);
+  bool ComputeUpdateRows(const MatrixGraph &graph);
   // Chooses solve_roots_: from the roots down, every subtree that still
   // fits into half of the factor's entries (none for small factors).
   void ChooseSolveSubtrees();
   // Chooses factor_tasks_ (none when Factorize() stays on one thread).
   void ChooseFactorTasks();
   // Runs |run_task| (bool(const FactorTask &, std::vector<int> *front_index,
-  // std::vector<int> *columns, const UvForkJoin *)) on every factor task,
+  // std::vector<int> *columns, const ForkJoin *)) on every factor task,
   // children's tasks first, on two threads, which also share the halves of
-  // large fronts (UvFactorDenseFront()); false when one fails.
+  // large fronts (FactorDenseFront()); false when one fails.
   template <typename RunTask>
   bool RunFactorTasks(const RunTask &run_task) const;
   class TaskQueue;
@@ -196,10 +197,10 @@ class UvSparseCholesky {
   // entries, one per unknown) and |columns|. |updates| holds every node's
   // update matrix until its parent has assembled it. |fork_join| (or null)
   // may run the halves of a large front's dense work at once.
-  bool FactorizeNode(const UvSymmetricMatrix &matrix, int n,
+  bool FactorizeNode(const SymmetricMatrix &matrix, int n,
                      std::vector<int> *front_index, std::vector<int> *columns,
                      std::vector<std::vector<double>> *updates,
-                     const UvForkJoin *fork_join);
+                     const ForkJoin *fork_join);
   // The front's global column numbers, own columns first.
   void FrontColumns(const Node &node, std::vector<int> *columns) const;
   Eigen::Map<Eigen::MatrixXd> Panel(const Node &node);
@@ -216,7 +217,7 @@ class UvSparseCholesky {
   std::unique_ptr<double[]> panels_;
   int64_t num_panel_entries_ = 0;
   int max_threads_ = 2;
-  UvDenseKernels dense_kernels_ = UvDenseKernels::kPortable;
+  DenseKernels dense_kernels_ = DenseKernels::kPortable;
   // Solve()'s second thread: the disjoint subtrees rooted at solve_roots_
   // (ascending), about half of the factor; in_solve_side_[node] whether a
   // node belongs to one of them.

@@ -218,7 +218,7 @@ TEST(UvLaplacianOperatorTest, TextureGraphIsThePatternWithoutTheDiagonal) {
   std::vector<UvTestCase> cases = TestdataCases();
   cases.push_back(ManyChartsCase(4, 7));
   for (const UvTestCase &c : cases) {
-    const UvMatrixGraph graph = UvTextureGraph(c.mesh);
+    const MatrixGraph graph = UvTextureGraph(c.mesh);
     ASSERT_EQ(graph.size(), c.mesh.num_vertices()) << c.name;
     for (const UvLaplacianKind kind : kKinds) {
       UvLaplacianOperator op;
@@ -242,7 +242,7 @@ TEST(UvLaplacianOperatorTest, TextureGraphIsThePatternWithoutTheDiagonal) {
 // Per vertex: whether an edge of |graph| at it has other than two faces
 // with distinct corners.
 std::vector<bool> BruteForceBoundary(const UvLaplacianMesh &mesh,
-                                     const UvMatrixGraph &graph) {
+                                     const MatrixGraph &graph) {
   std::map<std::pair<int, int>, int> faces_of_edge;
   for (const auto &f : mesh.faces) {
     if (f[0] != f[1] && f[1] != f[2] && f[2] != f[0]) {
@@ -285,7 +285,7 @@ TEST(UvLaplacianOperatorTest, BoundaryVerticesHaveAnEdgeOfOtherThanTwoFaces) {
   cases.push_back(odd);
   for (const UvTestCase &c : cases) {
     std::vector<bool> boundary;
-    const UvMatrixGraph graph = UvTextureGraph(c.mesh, &boundary);
+    const MatrixGraph graph = UvTextureGraph(c.mesh, &boundary);
     const std::vector<bool> expected = BruteForceBoundary(c.mesh, graph);
     ASSERT_EQ(boundary.size(), expected.size()) << c.name;
     for (int v = 0; v < c.mesh.num_vertices(); ++v) {

@@ -37,16 +37,16 @@ struct FactoredFront {
   std::vector<double> update;
 };
 
-FactoredFront Factor(UvDenseKernels kernels, const Eigen::MatrixXd &front,
-                     int k, const UvForkJoin *fork_join) {
+FactoredFront Factor(DenseKernels kernels, const Eigen::MatrixXd &front, int k,
+                     const ForkJoin *fork_join) {
   const int m = static_cast<int>(front.rows());
   FactoredFront f;
   const Eigen::MatrixXd panel = front.leftCols(k);
   const Eigen::MatrixXd update = front.bottomRightCorner(m - k, m - k);
   f.panel.assign(panel.data(), panel.data() + panel.size());
   f.update.assign(update.data(), update.data() + update.size());
-  EXPECT_TRUE(UvFactorDenseFront(kernels, f.panel.data(), m, k, f.update.data(),
-                                 fork_join));
+  EXPECT_TRUE(FactorDenseFront(kernels, f.panel.data(), m, k, f.update.data(),
+                               fork_join));
   return f;
 }
 
@@ -83,10 +83,10 @@ void ExpectPartialFactorisation(const Eigen::MatrixXd &front, int k,
             1e-9);
 }
 
-TEST(UvDenseFrontTest, FactorsSmallAndSplitFronts) {
+TEST(DenseFrontTest, FactorsSmallAndSplitFronts) {
   // k (m - k)^2 below and above the size at which the work is split.
-  for (const UvDenseKernels kernels :
-       {UvDenseKernels::kPortable, UvDenseKernels::kFastestHere}) {
+  for (const DenseKernels kernels :
+       {DenseKernels::kPortable, DenseKernels::kFastestHere}) {
     for (const int k : {1, 40, 300}) {
       for (const int r : {0, 7, 120, 700}) {
         SCOPED_TRACE(testing::Message() << "k " << k << " r " << r);
@@ -98,24 +98,24 @@ TEST(UvDenseFrontTest, FactorsSmallAndSplitFronts) {
   }
 }
 
-TEST(UvDenseFrontTest, SplitFrontsDoNotDependOnHowTheHalvesRun) {
-  const UvForkJoin on_two_threads = [](const std::function<void()> &a,
-                                       const std::function<void()> &b) {
+TEST(DenseFrontTest, SplitFrontsDoNotDependOnHowTheHalvesRun) {
+  const ForkJoin on_two_threads = [](const std::function<void()> &a,
+                                     const std::function<void()> &b) {
     std::thread other(b);
     a();
     other.join();
   };
-  const UvForkJoin second_first = [](const std::function<void()> &a,
-                                     const std::function<void()> &b) {
+  const ForkJoin second_first = [](const std::function<void()> &a,
+                                   const std::function<void()> &b) {
     b();
     a();
   };
   const int k = 300, r = 700;
   const Eigen::MatrixXd front = MakeFront(k + r);
-  for (const UvDenseKernels kernels :
-       {UvDenseKernels::kPortable, UvDenseKernels::kFastestHere}) {
+  for (const DenseKernels kernels :
+       {DenseKernels::kPortable, DenseKernels::kFastestHere}) {
     const FactoredFront expected = Factor(kernels, front, k, nullptr);
-    for (const UvForkJoin *fork_join : {&on_two_threads, &second_first}) {
+    for (const ForkJoin *fork_join : {&on_two_threads, &second_first}) {
       const FactoredFront f = Factor(kernels, front, k, fork_join);
       EXPECT_EQ(f.panel, expected.panel);
       EXPECT_EQ(f.update, expected.update);
@@ -126,11 +126,11 @@ TEST(UvDenseFrontTest, SplitFrontsDoNotDependOnHowTheHalvesRun) {
 // Eigen sizes its blocks, and so orders its sums, by the cache sizes it reads
 // from the CPU; the dense kernels use fixed ones, so that a front factorises
 // the same on every CPU with their instruction set.
-TEST(UvDenseFrontTest, FactorsTheSameWhateverTheCpusCacheSizes) {
+TEST(DenseFrontTest, FactorsTheSameWhateverTheCpusCacheSizes) {
   const int k = 600, r = 400;
   const Eigen::MatrixXd front = MakeFront(k + r);
-  for (const UvDenseKernels kernels :
-       {UvDenseKernels::kPortable, UvDenseKernels::kFastestHere}) {
+  for (const DenseKernels kernels :
+       {DenseKernels::kPortable, DenseKernels::kFastestHere}) {
     const FactoredFront expected = Factor(kernels, front, k, nullptr);
     const ScopedEigenCacheSizes other_cpu;
     const FactoredFront f = Factor(kernels, front, k, nullptr);

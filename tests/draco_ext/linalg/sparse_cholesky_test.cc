@@ -30,8 +30,8 @@ namespace {
 // equations of a mesh. Its graph is the 8-neighbour grid graph (the
 // matrix couples only a third of the unknowns two edges apart in it).
 struct GridSystem {
-  UvMatrixGraph graph;
-  UvSymmetricMatrix matrix;
+  MatrixGraph graph;
+  SymmetricMatrix matrix;
 };
 
 GridSystem MakeGridSystem(int side) {
@@ -83,7 +83,7 @@ GridSystem MakeGridSystem(int side) {
   return s;
 }
 
-Eigen::MatrixXd Multiply(const UvSymmetricMatrix &m, const Eigen::MatrixXd &x) {
+Eigen::MatrixXd Multiply(const SymmetricMatrix &m, const Eigen::MatrixXd &x) {
   Eigen::MatrixXd y = Eigen::MatrixXd::Zero(x.rows(), x.cols());
   for (int u = 0; u < m.size; ++u) {
     for (int e = m.column_start[u]; e < m.column_start[u + 1]; ++e) {
@@ -127,10 +127,10 @@ GridSystem MakeGridNormalSystem(int side) {
   return s;
 }
 
-TEST(UvSparseCholeskyTest, SolvesNormalEquationsOrderedOnTheSquareRootGraph) {
+TEST(SparseCholeskyTest, SolvesNormalEquationsOrderedOnTheSquareRootGraph) {
   for (const int side : {7, 40, 150}) {
     const GridSystem s = MakeGridNormalSystem(side);
-    UvSparseCholesky cholesky;
+    SparseCholesky cholesky;
     ASSERT_TRUE(cholesky.Analyze(s.graph, int64_t{1} << 26)) << side;
     ASSERT_TRUE(cholesky.Factorize(s.matrix)) << side;
     const Eigen::MatrixXd x = Eigen::MatrixXd::Random(s.matrix.size, 2);
@@ -140,9 +140,9 @@ TEST(UvSparseCholeskyTest, SolvesNormalEquationsOrderedOnTheSquareRootGraph) {
   }
 }
 
-TEST(UvSparseCholeskyTest, SolvesALargeGridSystem) {
+TEST(SparseCholeskyTest, SolvesALargeGridSystem) {
   const GridSystem s = MakeGridSystem(200);
-  UvSparseCholesky cholesky;
+  SparseCholesky cholesky;
   ASSERT_TRUE(cholesky.Analyze(s.graph, int64_t{1} << 26));
   ASSERT_TRUE(cholesky.Factorize(s.matrix));
   const Eigen::MatrixXd x = Eigen::MatrixXd::Random(s.matrix.size, 2);
@@ -151,12 +151,12 @@ TEST(UvSparseCholeskyTest, SolvesALargeGridSystem) {
   EXPECT_LT((b - x).cwiseAbs().maxCoeff(), 1e-9);
 }
 
-TEST(UvSparseCholeskyTest, TwoThreadsGiveTheSameFactorAsOne) {
+TEST(SparseCholeskyTest, TwoThreadsGiveTheSameFactorAsOne) {
   // Large enough for Factorize() and Solve() to use a second thread, and
   // for the fronts below the root to be split between the threads
   // (k r^2 > 2^25).
   const GridSystem s = MakeGridSystem(300);
-  UvSparseCholesky one, two;
+  SparseCholesky one, two;
   one.set_max_threads(1);
   ASSERT_TRUE(one.Analyze(s.graph, int64_t{1} << 26));
   ASSERT_TRUE(two.Analyze(s.graph, int64_t{1} << 26));
@@ -174,11 +174,11 @@ TEST(UvSparseCholeskyTest, TwoThreadsGiveTheSameFactorAsOne) {
   }
 }
 
-TEST(UvSparseCholeskyTest, RejectsIndefiniteMatricesInAnySubtree) {
+TEST(SparseCholeskyTest, RejectsIndefiniteMatricesInAnySubtree) {
   GridSystem s = MakeGridSystem(200);
-  for (const UvDenseKernels kernels :
-       {UvDenseKernels::kPortable, UvDenseKernels::kFastestHere}) {
-    UvSparseCholesky cholesky;
+  for (const DenseKernels kernels :
+       {DenseKernels::kPortable, DenseKernels::kFastestHere}) {
+    SparseCholesky cholesky;
     cholesky.set_dense_kernels(kernels);
     ASSERT_TRUE(cholesky.Analyze(s.graph, int64_t{1} << 26));
     // Negative diagonals at both ends of the grid, in different subtrees.
@@ -198,11 +198,11 @@ TEST(UvSparseCholeskyTest, RejectsIndefiniteMatricesInAnySubtree) {
 // On CPUs with AVX2 and FMA the fastest kernels are another build of the
 // same algorithm, which rounds differently (dense_front.h); elsewhere
 // they are the portable ones and this compares them with themselves.
-TEST(UvSparseCholeskyTest, FastestDenseKernelsSolveAsWellAndDeterministically) {
-  RecordProperty("avx2", UvDenseKernelsUseAvx2() ? "yes" : "no");
+TEST(SparseCholeskyTest, FastestDenseKernelsSolveAsWellAndDeterministically) {
+  RecordProperty("avx2", DenseKernelsUseAvx2() ? "yes" : "no");
   const GridSystem s = MakeGridNormalSystem(150);
-  UvSparseCholesky portable, fastest;
-  fastest.set_dense_kernels(UvDenseKernels::kFastestHere);
+  SparseCholesky portable, fastest;
+  fastest.set_dense_kernels(DenseKernels::kFastestHere);
   ASSERT_TRUE(portable.Analyze(s.graph, int64_t{1} << 26));
   ASSERT_TRUE(fastest.Analyze(s.graph, int64_t{1} << 26));
   ASSERT_TRUE(portable.Factorize(s.matrix));
@@ -227,12 +227,12 @@ TEST(UvSparseCholeskyTest, FastestDenseKernelsSolveAsWellAndDeterministically) {
 // The factor and the solution do not depend on the cache sizes by which Eigen
 // blocks its matrix kernels (dense_front_impl.h, Solve()), so that an
 // encoder picks the same anchors on every CPU with its instruction set.
-TEST(UvSparseCholeskyTest, SolvesTheSameWhateverTheCpusCacheSizes) {
+TEST(SparseCholeskyTest, SolvesTheSameWhateverTheCpusCacheSizes) {
   const GridSystem s = MakeGridNormalSystem(150);
   const Eigen::MatrixXd rhs = Eigen::MatrixXd::Random(s.matrix.size, 2);
-  for (const UvDenseKernels kernels :
-       {UvDenseKernels::kPortable, UvDenseKernels::kFastestHere}) {
-    UvSparseCholesky cholesky;
+  for (const DenseKernels kernels :
+       {DenseKernels::kPortable, DenseKernels::kFastestHere}) {
+    SparseCholesky cholesky;
     cholesky.set_dense_kernels(kernels);
     ASSERT_TRUE(cholesky.Analyze(s.graph, int64_t{1} << 26));
     ASSERT_TRUE(cholesky.Factorize(s.matrix));
