@@ -22,6 +22,7 @@ list(
   APPEND draco_compression_attributes_pred_schemes_dec_sources
          "${draco_uv_ext}/common/uv_bitstream_guard.h"
          "${draco_uv_ext}/common/fixed_point.h"
+         "${draco_uv_ext}/common/threads.h"
          "${draco_uv_ext}/weighted/uv_lookahead.h"
          "${draco_uv_ext}/weighted/uv_processing_order.h"
          "${draco_uv_ext}/laplacian/mesh_prediction_scheme_tex_coords_laplacian_decoder.h"

@@ -22,13 +22,12 @@
 #include <functional>
 #include <mutex>
 #include <numeric>
-#include <thread>
 #include <utility>
 
 #include <Eigen/Core>
 
+#include "draco_ext/common/threads.h"
 #include "draco_ext/linalg/dense_front.h"
-#include "draco_ext/weighted/uv_lookahead.h"
 
 namespace draco {
 
@@ -120,7 +119,7 @@ class SparseCholesky::Dissection {
                            std::vector<int> *order) {
     std::vector<Node> side_nodes;
     std::vector<int> side_order, side_roots;
-    std::thread worker([&] {
+    SecondThread worker([&] {
       Dissection side(graph_);
       for (size_t i = second; i < parts->size(); ++i) {
         side_roots.push_back(side.Dissect(std::move((*parts)[i]), false,
@@ -130,7 +129,7 @@ class SparseCholesky::Dissection {
     for (size_t i = 0; i < second; ++i) {
       children->push_back(Dissect(std::move((*parts)[i]), false, nodes, order));
     }
-    worker.join();
+    worker.Join();
     // Renumber the second group's nodes and columns after the first's.
     const int node_offset = static_cast<int>(nodes->size());
     const int column_offset = static_cast<int>(order->size());
@@ -697,19 +696,14 @@ bool SparseCholesky::RunFactorTasks(const RunTask &run_task) const {
 }
 
 bool SparseCholesky::MayUseSecondThread() const {
-  return max_threads_ > 1 && UvSecondThreadAvailable();
+  return max_threads_ > 1 && SecondThreadAvailable();
 }
 
 template <typename Side, typename Other>
 void SparseCholesky::RunBoth(const Side &side, const Other &other) const {
-  if (!MayUseSecondThread()) {
-    side();
-    other();
-    return;
-  }
-  std::thread worker(side);
+  SecondThread worker(side, max_threads_ > 1);
   other();
-  worker.join();
+  worker.Join();
 }
 
 void SparseCholesky::ChooseFactorTasks() {

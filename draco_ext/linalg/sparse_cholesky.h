@@ -174,9 +174,10 @@ class SparseCholesky {
   bool RunFactorTasks(const RunTask &run_task) const;
   class TaskQueue;
   // True when a second thread may be used: allowed by set_max_threads()
-  // and by UvSecondThreadAvailable() (SetUvMaxThreads(), cores, WebAssembly).
+  // and by SecondThreadAvailable() (SetMaxThreads(), cores, WebAssembly).
   bool MayUseSecondThread() const;
-  // Runs |side| on a second thread and |other| on this one, or both here.
+  // Runs |side| on a second thread and |other| on this one when
+  // MayUseSecondThread(), else |side| then |other| here (SecondThread).
   template <typename Side, typename Other>
   void RunBoth(const Side &side, const Other &other) const;
   class SolveProgress;

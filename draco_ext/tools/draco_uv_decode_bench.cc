@@ -22,7 +22,7 @@
 // of a shared machine hit every variant alike, and the minimum over the
 // rounds is reported. The same library decodes both (stock files decode
 // exactly as with stock Draco). Our files are decoded with each thread cap
-// of --threads (SetUvMaxThreads()): by default as shipped (a second thread
+// of --threads (SetMaxThreads()): by default as shipped (a second thread
 // computes stencil frames ahead) and on one thread.
 #include <algorithm>
 #include <chrono>
@@ -35,7 +35,7 @@
 #include "draco_ext/tools/uv_tool_args.h"
 #include "draco_ext/options/uv_encode_settings.h"
 #include "draco_ext/eval/uv_eval.h"
-#include "draco_ext/weighted/uv_lookahead.h"
+#include "draco_ext/common/threads.h"
 
 namespace {
 
@@ -139,7 +139,7 @@ std::vector<double> MinDecodeMs(const std::vector<std::vector<char>> &files,
   for (int round = 0; round < rounds; ++round) {
     for (size_t i = 0, k = 0; i < files.size(); ++i) {
       for (size_t t = 0; t < (i == 0 ? 1 : threads.size()); ++t, ++k) {
-        draco::SetUvMaxThreads(threads[t]);
+        draco::SetMaxThreads(threads[t]);
         const double ms = DecodeMs(files[i]);
         if (ms < 0) {
           return {};
@@ -148,7 +148,7 @@ std::vector<double> MinDecodeMs(const std::vector<std::vector<char>> &files,
       }
     }
   }
-  draco::SetUvMaxThreads(threads[0]);
+  draco::SetMaxThreads(threads[0]);
   return best;
 }
 
@@ -189,7 +189,7 @@ int main(int argc, char **argv) {
     Usage();
     return draco::UvToolUsageExitCode(argc, argv);
   }
-  draco::SetUvMaxThreads(args.threads[0]);
+  draco::SetMaxThreads(args.threads[0]);
   const std::vector<std::string> columns = ColumnNames(args);
   std::string header = "| mesh | stock ms |", rule = "| --- | ---: |";
   for (const std::string &column : columns) {

@@ -36,6 +36,7 @@
 
 #include "draco/attributes/point_attribute.h"
 #include "draco/attributes/geometry_indices.h"
+#include "draco_ext/common/threads.h"
 #include "draco_ext/common/uv_corner_graph.h"
 #include "draco_ext/weighted/uv_lookahead.h"
 #include "draco_ext/weighted/uv_processing_order.h"
@@ -641,7 +642,7 @@ bool UseLookaheadThread(
     const MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT> &predictor,
     int num_items) {
   return predictor.max_threads() > 1 &&
-         num_items >= kMinItemsForLookaheadThread && UvSecondThreadAvailable();
+         num_items >= kMinItemsForLookaheadThread && SecondThreadAvailable();
 }
 
 template <typename DataTypeT, class MeshDataT>

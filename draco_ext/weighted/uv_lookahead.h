@@ -21,65 +21,27 @@
 #include <cstdint>
 #include <functional>
 #include <memory>
-#include <thread>
-
-#if defined(__linux__)
-#include <sched.h>
-#endif
+#include <optional>
 
 #include "draco/core/macros.h"
+#include "draco_ext/common/threads.h"
 
 namespace draco {
-
-namespace uv_lookahead_internal {
-inline std::atomic<int> &MaxThreads() {
-  static std::atomic<int> max_threads{2};
-  return max_threads;
-}
-}  // namespace uv_lookahead_internal
-
-// Process-wide thread setting of draco-uv's coders (default 2). With 1 they
-// never start a thread, e.g. for applications that already decode many
-// meshes in parallel; above 1 they may run work on other threads (the
-// weighted schemes one, the Laplacian decoder at most two at a time).
-// Output never depends on it.
-inline void SetUvMaxThreads(int max_threads) {
-  uv_lookahead_internal::MaxThreads().store(max_threads);
-}
-inline int UvMaxThreads() { return uv_lookahead_internal::MaxThreads().load(); }
-
-// True when a second thread can run alongside this one: allowed by
-// SetUvMaxThreads(), more than one core this process may use (on Linux its
-// CPU affinity, so that `taskset -c 0` gives one thread), and not a
-// WebAssembly build without threads (where std::thread aborts).
-inline bool UvSecondThreadAvailable() {
-  if (UvMaxThreads() < 2) {
-    return false;
-  }
-#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
-  return false;
-#elif defined(__linux__)
-  cpu_set_t cpus;
-  if (sched_getaffinity(0, sizeof(cpus), &cpus) == 0) {
-    return CPU_COUNT(&cpus) > 1;
-  }
-  return std::thread::hardware_concurrency() > 1;
-#else
-  return std::thread::hardware_concurrency() > 1;
-#endif
-}
 
 // Provides items 0 .. n - 1 of a sequence, in increasing order, where item
 // i is a pure function of i (it must not read anything the consumer
 // writes). Items are computed in chunks of kChunk by |compute|(begin, end,
-// out). With a second thread, the thread claims chunks in order and
-// computes them ahead. The consumer never waits for it: it computes a chunk
-// itself when it reaches one the thread has not finished (claiming it if
-// the thread has not started it), so a thread that starts late or is
-// descheduled costs at most some duplicated work. Whoever computes an item,
-// it is the same, so nothing depends on timing.
+// out). With |use_second_thread|, a second thread (SecondThread) claims
+// chunks in order and computes them ahead. The consumer never waits for
+// it: it computes a chunk itself when it reaches one the thread has not
+// finished (claiming it if the thread has not started it), so a thread
+// that starts late or is descheduled costs at most some duplicated work.
+// Whoever computes an item, it is the same, so nothing depends on timing.
 //
-// Memory: all n items with the second thread, one chunk without.
+// Memory: all n items with the second thread, one chunk without. Weak
+// where: asked for a second thread when none is available
+// (SecondThreadAvailable()), the constructor computes all n items itself
+// before it returns, so callers ask only when one is.
 template <typename T>
 class UvLookahead {
  public:
@@ -98,7 +60,7 @@ class UvLookahead {
       for (int c = 0; c < num_chunks_; ++c) {
         done_[c].store(0, std::memory_order_relaxed);
       }
-      worker_ = std::thread([this] { RunWorker(); });
+      worker_.emplace([this] { RunWorker(); });
     }
   }
 
@@ -106,7 +68,7 @@ class UvLookahead {
     if (threaded_) {
       // Stops the worker claiming more chunks (the consumer may stop early).
       next_chunk_.store(num_chunks_);
-      worker_.join();
+      worker_->Join();
     }
   }
 
@@ -165,7 +127,7 @@ class UvLookahead {
   std::atomic<int> next_chunk_{0};
   int current_chunk_ = -1;
   const T *current_ = nullptr;
-  std::thread worker_;
+  std::optional<SecondThread> worker_;
 };
 
 }  // namespace draco

@@ -103,12 +103,5 @@ TEST(UvLookaheadTest, NeverWaitsForAStalledThread) {
   }
 }
 
-TEST(UvLookaheadTest, MaxThreadsOfOneAllowsNoSecondThread) {
-  const int saved = UvMaxThreads();
-  SetUvMaxThreads(1);
-  EXPECT_FALSE(UvSecondThreadAvailable());
-  SetUvMaxThreads(saved);
-}
-
 }  // namespace
 }  // namespace draco
