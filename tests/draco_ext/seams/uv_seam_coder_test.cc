@@ -18,81 +18,13 @@
 #include <random>
 #include <set>
 
-#include "draco/mesh/mesh_misc_functions.h"
-#include "draco_ext/seams/uv_seam_edgebreaker.h"
 #include "draco_ext/eval/uv_seam_stats.h"
 #include "gtest/gtest.h"
+#include "tests/draco_ext/seams/uv_seam_test_meshes.h"
 #include "tests/draco_uv_test_utils.h"
 
 namespace draco {
 namespace {
-
-UvSeamTopology TopologyOf(const Mesh &mesh) {
-  UvSeamTopology topology;
-  const std::unique_ptr<CornerTable> table =
-      CreateCornerTableFromPositionAttribute(&mesh);
-  EXPECT_TRUE(table != nullptr && topology.Init(OppositesOf(*table)));
-  return topology;
-}
-
-std::unique_ptr<Mesh> ReadDracoTestMesh(const std::string &name) {
-  auto mesh = ReadTestMesh(DracoTestdataPath(name));
-  EXPECT_TRUE(mesh.ok()) << name;
-  return mesh.ok() ? std::move(mesh).value() : nullptr;
-}
-
-// Every edge once in each of its two vertices' rings, and once in Draco's
-// seam order.
-TEST(UvSeamTopologyTest, ListsEveryEdgeInBothRingsAndOnceInDracoOrder) {
-  for (const std::string name : {"cube_att.obj", "sphere.obj", "bun_zipper.ply",
-                                 "octagon.obj", "multiple_tetrahedrons.obj"}) {
-    const auto mesh = ReadDracoTestMesh(name);
-    ASSERT_NE(mesh, nullptr);
-    const UvSeamTopology topology = TopologyOf(*mesh);
-    std::vector<int> ring_count(topology.num_edges(), 0);
-    for (int32_t v = 0; v < topology.num_vertices(); ++v) {
-      int boundary = 0;
-      for (const int32_t *e = topology.RingBegin(v); e != topology.RingEnd(v);
-           ++e) {
-        if (*e == UvSeamTopology::kBoundary) {
-          ++boundary;
-          continue;
-        }
-        ++ring_count[*e];
-        EXPECT_TRUE(topology.EdgeVertex(*e, 0) == v ||
-                    topology.EdgeVertex(*e, 1) == v);
-      }
-      EXPECT_EQ(boundary, topology.IsOpen(v) ? 2 : 0) << name;
-    }
-    EXPECT_TRUE(std::all_of(ring_count.begin(), ring_count.end(),
-                            [](int count) { return count == 2; }))
-        << name;
-    std::vector<int32_t> order = topology.DracoSeamOrder();
-    std::sort(order.begin(), order.end());
-    EXPECT_EQ(order.size(), static_cast<size_t>(topology.num_edges()));
-    EXPECT_TRUE(std::adjacent_find(order.begin(), order.end()) == order.end());
-  }
-}
-
-TEST(UvSeamTopologyTest, ClosedMeshHasEulerCharacteristicTwo) {
-  const auto mesh = ReadDracoTestMesh("cube_att.obj");
-  ASSERT_NE(mesh, nullptr);
-  const UvSeamTopology topology = TopologyOf(*mesh);
-  EXPECT_EQ(topology.num_vertices() - topology.num_edges() +
-                topology.num_corners() / 3,
-            2);
-}
-
-TEST(UvSeamTopologyTest, RejectsInvalidOppositePairings) {
-  UvSeamTopology topology;
-  EXPECT_TRUE(topology.Init({-1, -1, -1, -1, -1, -1}));
-  EXPECT_TRUE(topology.Init({3, -1, -1, 0, -1, -1}));
-  EXPECT_FALSE(topology.Init({3, -1, -1, -1, -1, -1}));  // Not symmetric.
-  EXPECT_FALSE(topology.Init({1, 0, -1, -1, -1, -1}));   // Same face.
-  EXPECT_FALSE(topology.Init({6, -1, -1, -1, -1, -1}));  // Out of range.
-  EXPECT_FALSE(topology.Init({-2, -1, -1}));
-  EXPECT_FALSE(topology.Init({-1, -1}));  // Not whole faces.
-}
 
 // Seam problems of textured meshes of Draco's testdata (Draco's own seams).
 std::vector<UvSeamProblem> DracoTestdataProblems() {

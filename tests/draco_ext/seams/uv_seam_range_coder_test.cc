@@ -17,7 +17,6 @@
 #include <cmath>
 #include <random>
 
-#include "draco_ext/seams/uv_seam_bit_model.h"
 #include "gtest/gtest.h"
 
 namespace draco {
@@ -105,39 +104,6 @@ TEST(UvSeamRangeCoderTest, NoticesEveryAlteredOrShortenedStream) {
     longer.push_back(0);
     EXPECT_FALSE(DecodesTo(longer, coded));
   }
-}
-
-TEST(UvSeamBitModelTest, SquashAndStretchAreMonotoneInverses) {
-  for (int x = -2047; x <= 2047; ++x) {
-    EXPECT_LE(UvSeamSquash(x - 1), UvSeamSquash(x));
-    EXPECT_EQ(UvSeamSquash(UvSeamStretch(UvSeamSquash(x))), UvSeamSquash(x))
-        << x;
-  }
-  EXPECT_EQ(UvSeamSquash(0), 2047);
-  for (int p = 1; p < 4096; ++p) {
-    EXPECT_LE(UvSeamStretch(p - 1), UvSeamStretch(p));
-  }
-}
-
-TEST(UvSeamBitModelTest, LearnsASkewedContextAndKeepsContextsApart) {
-  UvSeamBitModel<1> model({2});
-  for (int i = 0; i < 500; ++i) {
-    const std::array<int, 1> rare = {0};
-    model.Predict(rare);
-    model.Update(i % 50 == 0);
-    const std::array<int, 1> common = {1};
-    model.Predict(common);
-    model.Update(i % 2 == 0);
-  }
-  const std::array<int, 1> rare = {0};
-  const uint32_t p_rare = model.Predict(rare);
-  model.Update(false);
-  const std::array<int, 1> common = {1};
-  const uint32_t p_common = model.Predict(common);
-  model.Update(false);
-  EXPECT_LT(p_rare, 4096 / 20);
-  EXPECT_GT(p_common, 4096 / 3);
-  EXPECT_LT(p_common, 2 * 4096 / 3);
 }
 
 }  // namespace

@@ -1,0 +1,52 @@
+// Copyright 2026 The draco-uv Authors.
+//
+// Licensed under the Apache License, Version 2.0 (the "License");
+// you may not use this file except in compliance with the License.
+// You may obtain a copy of the License at
+//
+//      http://www.apache.org/licenses/LICENSE-2.0
+//
+// Unless required by applicable law or agreed to in writing, software
+// distributed under the License is distributed on an "AS IS" BASIS,
+// WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+// See the License for the specific language governing permissions and
+// limitations under the License.
+//
+// Meshes of Draco's testdata and their seam topology, shared by the tests
+// of the seam topology and of the seam coder.
+#ifndef DRACO_UV_TESTS_DRACO_EXT_SEAMS_UV_SEAM_TEST_MESHES_H_
+#define DRACO_UV_TESTS_DRACO_EXT_SEAMS_UV_SEAM_TEST_MESHES_H_
+
+#include <memory>
+#include <string>
+
+#include "draco/mesh/mesh.h"
+#include "draco/mesh/mesh_misc_functions.h"
+#include "draco_ext/seams/uv_seam_edgebreaker.h"
+#include "draco_ext/seams/uv_seam_topology.h"
+#include "gtest/gtest.h"
+#include "tests/draco_uv_test_utils.h"
+
+namespace draco {
+
+// The seam topology of |mesh|'s position connectivity; a test failure if
+// it cannot be built.
+inline UvSeamTopology TopologyOf(const Mesh &mesh) {
+  UvSeamTopology topology;
+  const std::unique_ptr<CornerTable> table =
+      CreateCornerTableFromPositionAttribute(&mesh);
+  EXPECT_TRUE(table != nullptr && topology.Init(OppositesOf(*table)));
+  return topology;
+}
+
+// Mesh |name| of Draco's testdata; null, and a test failure, if it does
+// not load.
+inline std::unique_ptr<Mesh> ReadDracoTestMesh(const std::string &name) {
+  auto mesh = ReadTestMesh(DracoTestdataPath(name));
+  EXPECT_TRUE(mesh.ok()) << name;
+  return mesh.ok() ? std::move(mesh).value() : nullptr;
+}
+
+}  // namespace draco
+
+#endif  // DRACO_UV_TESTS_DRACO_EXT_SEAMS_UV_SEAM_TEST_MESHES_H_
