@@ -1,5 +1,5 @@
 # Included by Draco's own CMakeLists.txt through the build hook of
-# patches/0004, before Draco defines any source list or target: puts the
+# patches/0003, before Draco defines any source list or target: puts the
 # draco-uv tree on Draco's include path and adds our sources to Draco's
 # encoder and decoder source lists, so that libdraco, the tools and Draco's
 # unit tests all build with the extension.
@@ -14,19 +14,20 @@ find_package(Threads REQUIRED)
 link_libraries(Threads::Threads)
 # The Laplacian texture coordinate coder needs Eigen, which Draco itself puts
 # on the include path only for its transcoder.
-if(DRACO_EIGEN_PATH)
+if(DRACO_UV_LAPLACIAN AND DRACO_EIGEN_PATH)
   list(APPEND draco_include_paths "${DRACO_EIGEN_PATH}")
 endif()
 
 list(
   APPEND draco_compression_attributes_pred_schemes_dec_sources
+         "${draco_uv_ext}/hooks/prediction_scheme_decoders.h"
+         "${draco_uv_ext}/hooks/prediction_scheme_ids.h"
          "${draco_uv_ext}/common/uv_bitstream_guard.h"
+         "${draco_uv_ext}/common/uv_prediction_ids.h"
          "${draco_uv_ext}/common/fixed_point.h"
          "${draco_uv_ext}/common/threads.h"
          "${draco_uv_ext}/weighted/uv_lookahead.h"
          "${draco_uv_ext}/weighted/uv_processing_order.h"
-         "${draco_uv_ext}/laplacian/mesh_prediction_scheme_tex_coords_laplacian_decoder.h"
-         "${draco_uv_ext}/laplacian/mesh_prediction_scheme_tex_coords_laplacian_shared.h"
          "${draco_uv_ext}/weighted/mesh_prediction_scheme_tex_coords_weighted_decoder.h"
          "${draco_uv_ext}/weighted/mesh_prediction_scheme_tex_coords_weighted_predictor.h"
          "${draco_uv_ext}/weighted/mesh_prediction_scheme_tex_coords_weighted_shared.h"
@@ -34,7 +35,7 @@ list(
 
 list(
   APPEND draco_compression_attributes_pred_schemes_enc_sources
-         "${draco_uv_ext}/laplacian/mesh_prediction_scheme_tex_coords_laplacian_encoder.h"
+         "${draco_uv_ext}/hooks/prediction_scheme_encoders.h"
          "${draco_uv_ext}/weighted/mesh_prediction_scheme_tex_coords_weighted_encoder.h")
 
 # Object libraries with Draco's include paths (the prediction scheme lists
@@ -45,6 +46,7 @@ list(
          "${draco_uv_ext}/common/uv_residual_coder.h"
          "${draco_uv_ext}/seams/uv_seam_bit_model.cc"
          "${draco_uv_ext}/seams/uv_seam_bit_model.h"
+         "${draco_uv_ext}/hooks/edgebreaker_decoder.h"
          "${draco_uv_ext}/seams/mesh_edgebreaker_traversal_uv_seam_decoder.h"
          "${draco_uv_ext}/seams/uv_seam_coder.cc"
          "${draco_uv_ext}/seams/uv_seam_coder.h"
@@ -55,46 +57,60 @@ list(
          "${draco_uv_ext}/seams/uv_seam_topology.cc"
          "${draco_uv_ext}/seams/uv_seam_topology.h")
 
-# The Laplacian texture coordinate coder (encoder and decoder).
-list(
-  APPEND draco_compression_decode_sources
-         "${draco_uv_ext}/laplacian/uv_laplacian_coder.cc"
-         "${draco_uv_ext}/laplacian/uv_laplacian_coder.h"
-         "${draco_uv_ext}/laplacian/uv_laplacian_operator.cc"
-         "${draco_uv_ext}/laplacian/uv_laplacian_operator.h"
-         "${draco_uv_ext}/laplacian/uv_laplacian_system.cc"
-         "${draco_uv_ext}/laplacian/uv_laplacian_system.h"
-         "${draco_uv_ext}/linalg/sparse_cholesky.cc"
-         "${draco_uv_ext}/linalg/sparse_cholesky.h"
-         "${draco_uv_ext}/linalg/dense_front.cc"
-         "${draco_uv_ext}/linalg/dense_front.h"
-         "${draco_uv_ext}/linalg/dense_front_impl.h"
-         "${draco_uv_ext}/linalg/dense_front_portable.cc"
-         "${draco_uv_ext}/linalg/matrix_graph.h")
-
-# On x86-64, the Laplacian decoder's dense kernels also in an AVX2 and FMA
-# build, chosen at run time on CPUs that have both (dense_front.h).
-include(CheckCXXCompilerFlag)
-check_cxx_compiler_flag("-mavx2 -mfma" DRACO_UV_COMPILER_HAS_AVX2_FMA)
 # Seen by tests/CMakeLists.txt, outside Draco's directory scope.
 set(DRACO_UV_DENSE_FRONT_AVX2 OFF CACHE INTERNAL "")
-if(CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64|amd64)$"
-   AND CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang"
-   AND DRACO_UV_COMPILER_HAS_AVX2_FMA)
-  list(APPEND draco_compression_decode_sources
-       "${draco_uv_ext}/linalg/dense_front_avx2.cc")
-  set_source_files_properties("${draco_uv_ext}/linalg/dense_front_avx2.cc"
-                              PROPERTIES COMPILE_OPTIONS "-mavx2;-mfma")
-  set_source_files_properties("${draco_uv_ext}/linalg/dense_front.cc"
-                              PROPERTIES COMPILE_DEFINITIONS
-                                         DRACO_UV_DENSE_FRONT_AVX2)
-  set(DRACO_UV_DENSE_FRONT_AVX2 ON CACHE INTERNAL "")
+# The Laplacian texture coordinate coder (encoder and decoder) and its
+# solver; lossless-only builds (DRACO_UV_LAPLACIAN=OFF) leave them and Eigen
+# out.
+if(DRACO_UV_LAPLACIAN)
+  list(
+    APPEND draco_compression_decode_sources
+           "${draco_uv_ext}/laplacian/mesh_prediction_scheme_tex_coords_laplacian_decoder.h"
+           "${draco_uv_ext}/laplacian/mesh_prediction_scheme_tex_coords_laplacian_encoder.h"
+           "${draco_uv_ext}/laplacian/mesh_prediction_scheme_tex_coords_laplacian_shared.h"
+           "${draco_uv_ext}/laplacian/uv_laplacian_coder.cc"
+           "${draco_uv_ext}/laplacian/uv_laplacian_coder.h"
+           "${draco_uv_ext}/laplacian/uv_laplacian_operator.cc"
+           "${draco_uv_ext}/laplacian/uv_laplacian_operator.h"
+           "${draco_uv_ext}/laplacian/uv_laplacian_system.cc"
+           "${draco_uv_ext}/laplacian/uv_laplacian_system.h"
+           "${draco_uv_ext}/linalg/sparse_cholesky.cc"
+           "${draco_uv_ext}/linalg/sparse_cholesky.h"
+           "${draco_uv_ext}/linalg/dense_front.cc"
+           "${draco_uv_ext}/linalg/dense_front.h"
+           "${draco_uv_ext}/linalg/dense_front_impl.h"
+           "${draco_uv_ext}/linalg/dense_front_portable.cc"
+           "${draco_uv_ext}/linalg/matrix_graph.h")
+
+  # On x86-64, the Laplacian decoder's dense kernels also in an AVX2 and FMA
+  # build, chosen at run time on CPUs that have both (dense_front.h).
+  include(CheckCXXCompilerFlag)
+  check_cxx_compiler_flag("-mavx2 -mfma" DRACO_UV_COMPILER_HAS_AVX2_FMA)
+  if(CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64|amd64)$"
+     AND CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang"
+     AND DRACO_UV_COMPILER_HAS_AVX2_FMA)
+    list(APPEND draco_compression_decode_sources
+         "${draco_uv_ext}/linalg/dense_front_avx2.cc")
+    set_source_files_properties("${draco_uv_ext}/linalg/dense_front_avx2.cc"
+                                PROPERTIES COMPILE_OPTIONS "-mavx2;-mfma")
+    set_source_files_properties("${draco_uv_ext}/linalg/dense_front.cc"
+                                PROPERTIES COMPILE_DEFINITIONS
+                                           DRACO_UV_DENSE_FRONT_AVX2)
+    set(DRACO_UV_DENSE_FRONT_AVX2 ON CACHE INTERNAL "")
+  endif()
 endif()
 
 list(
   APPEND draco_compression_encode_sources
+         "${draco_uv_ext}/hooks/compression_options.h"
+         "${draco_uv_ext}/hooks/gltf.h"
+         "${draco_uv_ext}/hooks/tool_flags.h"
+         "${draco_uv_ext}/laplacian/uv_laplacian_settings.cc"
+         "${draco_uv_ext}/laplacian/uv_laplacian_settings.h"
          "${draco_uv_ext}/options/uv_compression_options.cc"
          "${draco_uv_ext}/options/uv_compression_options.h"
+         "${draco_uv_ext}/options/uv_configure.cc"
+         "${draco_uv_ext}/options/uv_configure.h"
          "${draco_uv_ext}/options/uv_encode_settings.cc"
          "${draco_uv_ext}/options/uv_encode_settings.h"
          "${draco_uv_ext}/gltf/uv_gltf.cc"
@@ -104,6 +120,7 @@ list(
          "${draco_uv_ext}/options/uv_laplacian_options.h"
          "${draco_uv_ext}/options/uv_prediction_options.cc"
          "${draco_uv_ext}/options/uv_prediction_options.h"
+         "${draco_uv_ext}/hooks/edgebreaker_encoder.h"
          "${draco_uv_ext}/seams/mesh_edgebreaker_traversal_uv_seam_encoder.h"
          "${draco_uv_ext}/seams/uv_seam_edgebreaker_encoder.cc"
          "${draco_uv_ext}/options/uv_seam_options.cc"

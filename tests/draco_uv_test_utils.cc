@@ -20,6 +20,8 @@
 
 #include "draco/compression/decode.h"
 #include "draco/io/mesh_io.h"
+#include "draco_ext/eval/uv_eval.h"
+#include "gtest/gtest.h"
 
 namespace draco {
 
@@ -87,6 +89,38 @@ std::vector<std::string> CorpusMeshPaths() {
 
 StatusOr<std::unique_ptr<Mesh>> ReadTestMesh(const std::string &path) {
   return ReadMeshFromFile(path);
+}
+
+UvCompressionOptions UvOptions(const std::string &scheme,
+                               const std::string &anchors) {
+  UvCompressionOptions options;
+  if (!scheme.empty()) {
+    const StatusOr<UvCompressionOptions> parsed = ParseUvSchemeName(scheme);
+    if (!parsed.ok()) {
+      ADD_FAILURE() << parsed.status().error_msg_string();
+      return UvCompressionOptions();
+    }
+    options = parsed.value();
+  }
+  if (!anchors.empty()) {
+    const StatusOr<UvAnchorSpec> spec = ParseUvAnchorSpec(anchors);
+    if (!spec.ok()) {
+      ADD_FAILURE() << spec.status().error_msg_string();
+      return UvCompressionOptions();
+    }
+    options.anchors = spec.value();
+  }
+  return options;
+}
+
+UvEncodeSettings Settings(int qp, int qt, int cl, const std::string &scheme,
+                          const std::string &anchors) {
+  UvEncodeSettings settings;
+  settings.qp = qp;
+  settings.qt = qt;
+  settings.cl = cl;
+  settings.uv = UvOptions(scheme, anchors);
+  return settings;
 }
 
 StatusOr<std::vector<char>> EncodeMeshToBytes(

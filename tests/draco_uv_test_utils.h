@@ -42,6 +42,17 @@ std::vector<std::string> CorpusMeshPaths();
 
 StatusOr<std::unique_ptr<Mesh>> ReadTestMesh(const std::string &path);
 
+// The draco-uv options of |scheme|, "<uv_pred>[+<uv_seams>]" as
+// draco_uv_eval names them (e.g. "weighted+context"; "" is stock Draco),
+// with -uv_anchors |anchors| unless empty. A bad name or anchor value fails
+// the calling test and gives stock options.
+UvCompressionOptions UvOptions(const std::string &scheme,
+                               const std::string &anchors = "");
+// draco_encoder's -qp |qp| -qt |qt| -cl |cl| with UvOptions(scheme,
+// anchors).
+UvEncodeSettings Settings(int qp, int qt, int cl, const std::string &scheme,
+                          const std::string &anchors = "");
+
 // EncodeMeshWithSettings() into a byte vector.
 StatusOr<std::vector<char>> EncodeMeshToBytes(
     const Mesh &mesh, const UvEncodeSettings &settings);

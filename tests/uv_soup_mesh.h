@@ -123,8 +123,8 @@ struct UvRoundTrip {
 };
 
 // Encodes |mesh| with |settings| and, unless |with_stock| is false, with
-// stock Draco (settings.uv_pred and uv_seams empty), decodes both and compares the
-// decoded meshes corner by corner.
+// stock Draco (settings.uv left at its defaults), decodes both and compares
+// the decoded meshes corner by corner.
 inline UvRoundTrip RoundTripAgainstStock(const Mesh &mesh,
                                          const UvEncodeSettings &settings,
                                          bool with_stock = true) {
@@ -140,8 +140,7 @@ inline UvRoundTrip RoundTripAgainstStock(const Mesh &mesh,
     return result;
   }
   UvEncodeSettings stock_settings = settings;
-  stock_settings.uv_pred.clear();
-  stock_settings.uv_seams.clear();
+  stock_settings.uv = UvCompressionOptions();
   EncoderBuffer stock;
   if (!EncodeMeshWithSettings(mesh, stock_settings, &stock).ok()) {
     return result;

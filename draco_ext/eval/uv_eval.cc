@@ -30,7 +30,6 @@
 #include "draco/mesh/mesh_attribute_corner_table.h"
 #include "draco/mesh/mesh_misc_functions.h"
 #include "draco_ext/options/uv_encode_settings.h"
-#include "draco_ext/options/uv_laplacian_options.h"
 #include "draco_ext/eval/uv_seam_stats.h"
 
 namespace draco {
@@ -329,7 +328,7 @@ namespace {
 struct UvEvalBaseline {
   // At the evaluated -cl, per -uv_seams name (the seams of other
   // non-position attributes, e.g. normals, depend on it).
-  std::map<std::string, int64_t> size_without_uvs;
+  std::map<UvSeamCoding, int64_t> size_without_uvs;
   int64_t stock_best_uv_bytes = 0;  // Best of -cl 7 and -cl 10.
   std::vector<float> reference_uvs;  // Stock Draco's decoded UVs.
 };
@@ -361,16 +360,17 @@ StatusOr<UvEvalBaseline> MeasureBaseline(const Mesh &mesh, const Mesh &without,
                                          const UvEvalOptions &options,
                                          int qt) {
   UvEvalBaseline baseline;
-  UvEncodeSettings settings{options.qp, 0, options.cl, "", ""};
+  UvEncodeSettings settings{options.qp, 0, options.cl};
   for (const std::string &scheme : MeasuredSchemes(options)) {
-    std::string uv_pred;
-    SplitSchemeName(scheme, &uv_pred, &settings.uv_seams);
-    if (baseline.size_without_uvs.count(settings.uv_seams) == 0) {
-      DRACO_ASSIGN_OR_RETURN(baseline.size_without_uvs[settings.uv_seams],
+    DRACO_ASSIGN_OR_RETURN(const UvCompressionOptions uv,
+                           ParseUvSchemeName(scheme));
+    settings.uv.seams = uv.seams;
+    if (baseline.size_without_uvs.count(uv.seams) == 0) {
+      DRACO_ASSIGN_OR_RETURN(baseline.size_without_uvs[uv.seams],
                              EncodedSize(without, settings));
     }
   }
-  settings.uv_seams.clear();
+  settings.uv.seams = UvSeamCoding::kDraco;
   settings.qt = qt;
   baseline.stock_best_uv_bytes = std::numeric_limits<int64_t>::max();
   for (const int cl : {7, 10}) {
@@ -390,7 +390,7 @@ StatusOr<UvEvalBaseline> MeasureBaseline(const Mesh &mesh, const Mesh &without,
 
 // Seam bytes of |mesh| encoded with |settings| (see UvEvalRow::seam_bytes).
 StatusOr<double> SeamBytes(const Mesh &mesh, const UvEncodeSettings &settings) {
-  if (settings.uv_seams.empty() || settings.uv_seams == "draco") {
+  if (settings.uv.seams == UvSeamCoding::kDraco) {
     return StockSeamBytes(mesh);
   }
   DRACO_ASSIGN_OR_RETURN(const UvSeamProblem problem,
@@ -407,17 +407,14 @@ StatusOr<UvEvalRow> MeasureScheme(const std::string &name, const Mesh &mesh,
   row.scheme = scheme;
   row.qt = qt;
   row.uv_vertices = CountUvVertices(mesh);
-  UvEncodeSettings settings{options.qp, qt, options.cl, "", ""};
-  SplitSchemeName(scheme, &settings.uv_pred, &settings.uv_seams);
-  if (settings.uv_pred == "draco") {
-    settings.uv_pred.clear();
-  }
-  row.lossy = IsUvLaplacianName(settings.uv_pred);
+  UvEncodeSettings settings{options.qp, qt, options.cl};
+  DRACO_ASSIGN_OR_RETURN(settings.uv, ParseUvSchemeName(scheme));
+  row.lossy = IsUvLaplacian(settings.uv.prediction);
   if (row.lossy) {
-    settings.uv_anchors = options.uv_anchors;
+    settings.uv.anchors = options.uv_anchors;
   }
   const int64_t size_without_uvs =
-      baseline.size_without_uvs.at(settings.uv_seams);
+      baseline.size_without_uvs.at(settings.uv.seams);
   TimedEncoding encoding;
   DRACO_RETURN_IF_ERROR(
       EncodeTimed(mesh, settings, options.repeat, &encoding));
@@ -439,11 +436,16 @@ StatusOr<UvEvalRow> MeasureScheme(const std::string &name, const Mesh &mesh,
 
 }  // namespace
 
-void SplitSchemeName(const std::string &scheme, std::string *uv_pred,
-                     std::string *uv_seams) {
+StatusOr<UvCompressionOptions> ParseUvSchemeName(const std::string &scheme) {
   const size_t plus = scheme.find('+');
-  *uv_pred = scheme.substr(0, plus);
-  *uv_seams = plus == std::string::npos ? "draco" : scheme.substr(plus + 1);
+  UvCompressionOptions options;
+  DRACO_ASSIGN_OR_RETURN(options.prediction,
+                         ParseUvPredictionName(scheme.substr(0, plus)));
+  if (plus != std::string::npos) {
+    DRACO_ASSIGN_OR_RETURN(options.seams,
+                           ParseUvSeamCodingName(scheme.substr(plus + 1)));
+  }
+  return options;
 }
 
 StatusOr<std::vector<UvEvalRow>> EvaluateMesh(const std::string &name,

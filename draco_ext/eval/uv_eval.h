@@ -19,11 +19,13 @@
 #define DRACO_EXT_EVAL_UV_EVAL_H_
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "draco/core/status_or.h"
 #include "draco/mesh/mesh.h"
+#include "draco_ext/options/uv_compression_options.h"
 
 namespace draco {
 
@@ -41,14 +43,14 @@ struct UvEvalOptions {
   // also be given so, e.g. "weighted+context"). The reference (stock
   // Draco's best of -cl 7 and 10) keeps stock seams.
   std::vector<std::string> seams = {"draco"};
-  // -uv_anchors of the Laplacian schemes; empty means the default.
-  std::string uv_anchors;
+  // -uv_anchors of the Laplacian schemes; unset means the default.
+  std::optional<UvAnchorSpec> uv_anchors;
 };
 
-// The -uv_pred and -uv_seams names of a measured scheme name
-// ("weighted+context": weighted, context; "weighted": weighted, draco).
-void SplitSchemeName(const std::string &scheme, std::string *uv_pred,
-                     std::string *uv_seams);
+// The options a measured scheme name stands for: "<uv_pred>[+<uv_seams>]",
+// e.g. "weighted+context" (seams default to "draco"). Unknown names are
+// errors that list the valid ones.
+StatusOr<UvCompressionOptions> ParseUvSchemeName(const std::string &scheme);
 
 // One (mesh, scheme, qt) measurement.
 struct UvEvalRow {

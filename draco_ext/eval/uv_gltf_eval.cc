@@ -26,7 +26,6 @@
 #include "draco/tools/draco_transcoder_lib.h"
 #include "draco_ext/eval/uv_eval.h"
 #include "draco_ext/gltf/uv_gltf_extension.h"
-#include "draco_ext/options/uv_laplacian_options.h"
 
 namespace draco {
 
@@ -243,15 +242,14 @@ StatusOr<std::vector<UvGltfEvalRow>> EvaluateGltfAsset(
     row.stock_bytes = stock_bytes;
 
     DracoCompressionOptions scheme_options = options.compression;
-    SplitSchemeName(scheme, &scheme_options.uv.prediction,
-                    &scheme_options.uv.seams);
+    DRACO_ASSIGN_OR_RETURN(scheme_options.uv, ParseUvSchemeName(scheme));
     const std::string file = output_path(scheme);
     const auto scene = TranscodeAndRead(input, file, scheme_options);
     Status status = scene.status();
     if (status.ok()) {
       // The lossy Laplacians change the UVs by design.
       status = CompareSceneGeometry(*stock_scene.value(), *scene.value(),
-                                    !IsUvLaplacianName(scheme));
+                                    !IsUvLaplacian(scheme_options.uv.prediction));
     }
     if (status.ok()) {
       DRACO_ASSIGN_OR_RETURN(row.bytes, TranscodedGltfBytes(file));

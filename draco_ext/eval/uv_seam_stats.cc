@@ -105,7 +105,7 @@ void EncodePerVertexFlags(const UvSeamTopology &topology,
 StatusOr<UvSeamProblem> BuildUvSeamProblem(const Mesh &mesh,
                                            const UvEncodeSettings &settings) {
   UvEncodeSettings stock = settings;
-  stock.uv_seams.clear();
+  stock.uv.seams = UvSeamCoding::kDraco;
   EncoderBuffer encoded;
   DRACO_RETURN_IF_ERROR(EncodeMeshWithSettings(mesh, stock, &encoded));
   // Draco's Edgebreaker decoder itself, to read its corner tables.
@@ -220,9 +220,9 @@ StatusOr<UvSeamStats> MeasureUvSeams(const std::string &name, const Mesh &mesh,
                     (BinaryEntropy(p_cv) + 6 * p_cv * BinaryEntropy(p_c));
   }
   UvEncodeSettings stock = settings;
-  stock.uv_seams.clear();
+  stock.uv.seams = UvSeamCoding::kDraco;
   UvEncodeSettings context = settings;
-  context.uv_seams = "context";
+  context.uv.seams = UvSeamCoding::kContext;
   EncoderBuffer stock_file, context_file;
   DRACO_RETURN_IF_ERROR(EncodeMeshWithSettings(mesh, stock, &stock_file));
   DRACO_RETURN_IF_ERROR(EncodeMeshWithSettings(mesh, context, &context_file));

@@ -20,8 +20,8 @@
 
 #include "draco/compression/draco_compression_options.h"
 #include "draco/core/encoder_buffer.h"
-#include "draco_ext/options/uv_laplacian_options.h"
-#include "draco_ext/options/uv_prediction_options.h"
+#include "draco_ext/common/uv_prediction_ids.h"
+#include "draco_ext/options/uv_configure.h"
 #include "draco_ext/options/uv_seam_options.h"
 
 namespace draco {
@@ -90,23 +90,15 @@ Status ConfigureUvCompressionForGltf(
     std::set<std::string> *extensions_used,
     std::set<std::string> *extensions_required) {
   const UvCompressionOptions &options = mesh.GetCompressionOptions().uv;
-  if (options.IsStock()) {
-    return OkStatus();
-  }
-  // The per-attribute summaries are for command-line tools; a library stays
-  // quiet.
+  // Checks the options even when they are stock, like every entry point;
+  // stock options leave the encoder untouched. The per-attribute summaries
+  // are for command-line tools; a library stays quiet.
   DRACO_RETURN_IF_ERROR(
-      ConfigureUvSeams(options.seams, &mesh, &encoder).status());
+      ConfigureUvCompression(options, &mesh, &encoder).status());
   const bool context_seams =
       GetUvSeamCoding(encoder.options()) != UvSeamCoding::kDraco;
-  DRACO_RETURN_IF_ERROR(
-      ConfigureUvPrediction(options.prediction, &mesh, &encoder).status());
-  // A primitive without Laplacian-coded texture coordinates ignores
-  // -uv_anchors (CheckUvCompressionOptions() ties it to a Laplacian name).
-  DRACO_RETURN_IF_ERROR(
-      ApplyUvAnchors(options.anchors, &mesh, &encoder).status());
   // With context seams the primitive needs the extension anyway.
-  if (IsAutoUvPrediction(options.prediction) && !context_seams &&
+  if (options.prediction == UvPrediction::kAuto && !context_seams &&
       extensions_required->count(kUvGltfExtension) == 0 &&
       UsesDracoUvScheme(mesh, encoder)) {
     DRACO_RETURN_IF_ERROR(

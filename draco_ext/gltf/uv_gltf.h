@@ -34,7 +34,7 @@ namespace draco {
 
 // Applies the UvCompressionOptions of |mesh| (mesh.GetCompressionOptions()
 // .uv) to |encoder|, which encodes |mesh|, the copy of a glTF primitive in
-// GltfAsset::CompressMeshWithDraco() (patches/0015) with quantization set
+// GltfAsset::CompressMeshWithDraco() (patches/0009) with quantization set
 // and V already flipped to glTF's convention (the coders infer UV
 // orientation from the data, so the mirror costs nothing). When a TEX_COORD
 // attribute ends up with a draco-uv scheme or the seams with draco-uv's

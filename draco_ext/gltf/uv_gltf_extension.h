@@ -33,7 +33,7 @@ namespace draco {
 constexpr char kUvGltfExtension[] = "DRACOUV_texcoord_compression";
 
 // True for the glTF extensions that draco-uv adds, which Draco's glTF reader
-// accepts in extensionsRequired (patches/0016).
+// accepts in extensionsRequired (patches/0010).
 inline bool IsUvGltfExtension(const std::string &name) {
   return name == kUvGltfExtension;
 }

@@ -29,6 +29,7 @@
 #include "draco/core/varint_encoding.h"
 #include "draco_ext/common/uv_bitstream_guard.h"
 #include "draco_ext/laplacian/uv_laplacian_coder.h"
+#include "draco_ext/laplacian/uv_laplacian_settings.h"
 #include "draco_ext/laplacian/mesh_prediction_scheme_tex_coords_laplacian_shared.h"
 
 namespace draco {
@@ -40,13 +41,13 @@ namespace draco {
 // How a lossy coder fits Draco's lossless integer pipeline: Draco quantises
 // the attribute before any prediction scheme sees it and dequantises the
 // integers the decoder's scheme returns. For this scheme the quantisation
-// only frames the data: ConfigureUvPrediction() (-uv_pred laplacian_*) sets
-// the attribute's quantisation to a frame 8 bits finer than the -qt the
-// user asked for (at most 30 bits) and passes -qt on as the option
-// kUvLaplacianStepBitsOption. The scheme reads the frame integers (the
-// original coordinates within 2^-(qt+9) of the range), quantises residuals
-// and anchors with the -qt step, range / (2^qt - 1), and writes the
-// whole result in its prediction data; Draco codes all-zero corrections,
+// only frames the data: ConfigureUvCompression() (-uv_pred laplacian_*)
+// sets the attribute's quantisation to a frame 8 bits finer than the -qt the
+// user asked for (at most 30 bits) and passes -qt on as the step bits of
+// the scheme's settings (uv_laplacian_settings.h). The scheme reads the
+// frame integers (the original coordinates within 2^-(qt+9) of the
+// range), quantises residuals and anchors with the -qt step,
+// range / (2^qt - 1), and writes the whole result in its prediction data; Draco codes all-zero corrections,
 // a few bytes. The decoder rounds its least-squares solution to the frame,
 // 256 times finer than the step, so the decoded floats carry the solver's
 // result rather than a -qt grid, at no cost in bits.
@@ -133,26 +134,6 @@ class MeshPredictionSchemeTexCoordsLaplacianEncoder
   EncoderBuffer stream_;
 };
 
-// The coder's options from the encoder's attribute options (see
-// mesh_prediction_scheme_tex_coords_laplacian_shared.h).
-inline UvLaplacianEncoderOptions UvLaplacianOptionsFor(
-    const EncoderOptions &options, int att_id) {
-  UvLaplacianEncoderOptions coder;
-  coder.kind = static_cast<UvLaplacianKind>(
-      options.GetAttributeInt(att_id, kUvLaplacianKindOption, 0));
-  coder.frame_bits =
-      options.GetAttributeInt(att_id, "quantization_bits", coder.frame_bits);
-  coder.step_bits = options.GetAttributeInt(att_id, kUvLaplacianStepBitsOption,
-                                            coder.frame_bits);
-  coder.extra_anchors = options.GetAttributeInt(
-      att_id, kUvLaplacianAnchorsOption, coder.extra_anchors);
-  coder.selection =
-      options.GetAttributeInt(att_id, kUvLaplacianRandomAnchorsOption, 0) != 0
-          ? UvAnchorSelection::kRandom
-          : UvAnchorSelection::kGreedy;
-  return coder;
-}
-
 // Creates the encoder for attribute |att_id| of |encoder|'s mesh, like
 // CreateMeshPredictionScheme() does for Draco's own schemes, but with the
 // encoder options. Null when the encoder has no mesh connectivity.
@@ -173,7 +154,7 @@ CreateMeshPredictionSchemeTexCoordsLaplacianEncoder(
     return nullptr;
   }
   const UvLaplacianEncoderOptions options =
-      UvLaplacianOptionsFor(*encoder->options(), att_id);
+      GetUvLaplacianSettings(*encoder->options(), att_id);
   const MeshAttributeCornerTable *const att_table =
       mesh_encoder->GetAttributeCornerTable(att_id);
   if (att_table != nullptr) {

@@ -31,19 +31,6 @@ namespace draco {
 // Version of the scheme's prediction data; decoders reject other values.
 constexpr uint8_t kTexCoordsLaplacianFormatVersion = 3;
 
-// Attribute options of the encoder, set by ConfigureUvPrediction() for
-// -uv_pred laplacian_* and -uv_anchors (uv_laplacian_options.h).
-// UvLaplacianKind.
-constexpr char kUvLaplacianKindOption[] = "uv_laplacian_kind";
-// Quantisation step of residuals and anchors: the -qt the user asked for.
-// The attribute's own "quantization_bits" hold the finer frame.
-constexpr char kUvLaplacianStepBitsOption[] = "uv_laplacian_step_bits";
-// Number of extra anchors (-uv_anchors K, default 50).
-constexpr char kUvLaplacianAnchorsOption[] = "uv_laplacian_anchors";
-// Non-zero: random instead of greedy extra anchors (-uv_anchors random:K).
-constexpr char kUvLaplacianRandomAnchorsOption[] =
-    "uv_laplacian_random_anchors";
-
 // The coder's view of one texture coordinate attribute: one texture vertex
 // per attribute entry, at the 3D position of the entry's point, and the
 // faces whose three corners have valid entries.

@@ -53,28 +53,9 @@
 #include "draco/core/decoder_buffer.h"
 #include "draco/core/encoder_buffer.h"
 #include "draco_ext/laplacian/uv_laplacian_operator.h"
+#include "draco_ext/laplacian/uv_laplacian_settings.h"
 
 namespace draco {
-
-// Largest supported step bits (-qt).
-constexpr int kUvLaplacianMaxStepBits = 20;
-// Largest supported frame bits (Draco's quantisation limit).
-constexpr int kUvLaplacianMaxFrameBits = 30;
-
-enum class UvAnchorSelection : uint8_t { kGreedy = 0, kRandom = 1 };
-
-struct UvLaplacianEncoderOptions {
-  UvLaplacianKind kind = UvLaplacianKind::kMeanValue;
-  // Texture coordinates are given in units of a grid with 2^frame_bits - 1
-  // steps over their range; residuals and anchors are quantised with
-  // (2^frame_bits - 1) / (2^step_bits - 1) of those units.
-  int step_bits = 12;
-  int frame_bits = 20;
-  int extra_anchors = 50;
-  UvAnchorSelection selection = UvAnchorSelection::kGreedy;
-  // Off: plain rounding of the residuals, as in the paper.
-  bool error_diffusion = true;
-};
 
 // Caps the factor of the least-squares system of |num_vertices| texture
 // vertices (entries, 8 bytes each): linear in the mesh, at most 2^28, so

@@ -34,16 +34,10 @@
 
 #include <Eigen/Core>
 
+#include "draco_ext/laplacian/uv_laplacian_settings.h"
 #include "draco_ext/linalg/matrix_graph.h"
 
 namespace draco {
-
-enum class UvLaplacianKind : uint8_t {
-  kTutte = 0,
-  kCotangent = 1,
-  kMeanValue = 2,
-};
-constexpr int kNumUvLaplacianKinds = 3;
 
 // The texture connectivity of one texture coordinate attribute together with
 // the 3D geometry the decoder already has.

@@ -14,13 +14,16 @@
 //
 #include "draco_ext/options/uv_compression_options.h"
 
-#ifdef DRACO_TRANSCODER_SUPPORTED
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
 #include <cstring>
 
+#include "draco_ext/laplacian/uv_laplacian_settings.h"
+
+#ifdef DRACO_TRANSCODER_SUPPORTED
 #include "draco/compression/draco_compression_options.h"
-#include "draco_ext/options/uv_laplacian_options.h"
-#include "draco_ext/options/uv_prediction_options.h"
-#include "draco_ext/options/uv_seam_options.h"
+#endif
 
 namespace draco {
 
@@ -29,72 +32,206 @@ namespace {
 constexpr char kPredictionFlag[] = "-uv_pred";
 constexpr char kSeamsFlag[] = "-uv_seams";
 constexpr char kAnchorsFlag[] = "-uv_anchors";
+constexpr char kRandomPrefix[] = "random:";
 
-// Also stock for -uv_seams: "draco" is the stock name of both flags.
-bool IsStockPredictionName(const std::string &name) {
-  return name.empty() || name == "draco";
+struct UvSeamCodingName {
+  const char *name;
+  UvSeamCoding coding;
+  const char *description;
+};
+
+constexpr UvSeamCodingName kSeamCodingNames[] = {
+    {"draco", UvSeamCoding::kDraco,
+     "stock Draco: a static-probability bit per edge (default)"},
+    {"context", UvSeamCoding::kContext,
+     "context-modelled crease bits (draco-uv)"},
+};
+
+// Looks |name| up in |table| (entries with a .name); on failure, an error
+// that names |flag| and lists the valid names.
+template <class TableT>
+auto FindName(const TableT &table, const std::string &name, const char *flag)
+    -> StatusOr<decltype(&*std::begin(table))> {
+  std::string valid;
+  for (const auto &entry : table) {
+    if (name == entry.name) {
+      return &entry;
+    }
+    valid += (valid.empty() ? "" : ", ") + std::string(entry.name);
+  }
+  return Status(Status::DRACO_ERROR, std::string("Unknown ") + flag +
+                                         " name '" + name +
+                                         "'. Valid names: " + valid + ".");
 }
 
-Status CheckUvSeams(const DracoCompressionOptions &options) {
-  const std::string &name = options.uv.seams;
-  if (IsStockPredictionName(name)) {
-    return OkStatus();
+bool ParseCount(const std::string &text, int *count) {
+  char *end = nullptr;
+  const long value = std::strtol(text.c_str(), &end, 10);
+  if (text.empty() || *end != '\0' || value < 0 ||
+      value > kUvLaplacianMaxExtraAnchors) {
+    return false;
   }
-  DRACO_RETURN_IF_ERROR(ParseUvSeamCodingName(name).status());
-  if (options.compression_level < 1) {
-    return ErrorStatus(
-        "-uv_seams needs Edgebreaker encoding: compression level 1 or more.");
-  }
-  return OkStatus();
+  *count = static_cast<int>(value);
+  return true;
 }
 
-Status CheckUvPrediction(const DracoCompressionOptions &options) {
-  const std::string &name = options.uv.prediction;
-  if (IsStockPredictionName(name)) {
-    return OkStatus();
+// "P%" with 0 <= P <= 100 (decimals allowed).
+bool ParsePercent(const std::string &text, double *percent) {
+  if (text.size() < 2 || text.back() != '%') {
+    return false;
   }
-  DRACO_ASSIGN_OR_RETURN(const PredictionSchemeMethod method,
-                         ParseUvPredictionName(name));
-  if (options.compression_level < 1) {
-    return ErrorStatus(
-        "-uv_pred needs Edgebreaker encoding: compression level 1 or more.");
+  const std::string number = text.substr(0, text.size() - 1);
+  char *end = nullptr;
+  const double value = std::strtod(number.c_str(), &end);
+  if (*end != '\0' || !(value >= 0.0 && value <= 100.0)) {
+    return false;
   }
-  if (options.quantization_bits_tex_coord <= 0) {
-    return ErrorStatus("-uv_pred needs quantized texture coordinates.");
-  }
-  const bool positions_quantized =
-      !options.quantization_position.AreQuantizationBitsDefined() ||
-      options.quantization_position.quantization_bits() > 0;
-  if (!positions_quantized && !IsAutoUvPrediction(name) &&
-      UvPredictionNeedsQuantizedPositions(method)) {
-    return ErrorStatus("-uv_pred " + name + " needs quantized positions.");
-  }
-  return OkStatus();
+  *percent = value;
+  return true;
 }
 
-Status CheckUvAnchors(const DracoCompressionOptions &options) {
-  if (options.uv.anchors.empty()) {
-    return OkStatus();
+// One help line per name, descriptions aligned.
+template <class EntryT>
+std::string NameLines(const EntryT *begin, const EntryT *end) {
+  std::string lines;
+  for (const EntryT *entry = begin; entry != end; ++entry) {
+    std::string line = "                          " + std::string(entry->name);
+    line.resize(std::max<size_t>(line.size() + 1, 48), ' ');
+    lines += line + entry->description + "\n";
   }
-  DRACO_RETURN_IF_ERROR(ParseUvAnchorSpec(options.uv.anchors).status());
-  if (!IsUvLaplacianName(options.uv.prediction)) {
+  return lines;
+}
+
+}  // namespace
+
+const std::vector<UvPredictionName> &UvPredictionNames() {
+  static const std::vector<UvPredictionName> names = {
+      {"draco", UvPrediction::kDraco, PREDICTION_UNDEFINED,
+       "stock Draco's choice (default)"},
+      {"parallelogram", UvPrediction::kParallelogram,
+       MESH_PREDICTION_PARALLELOGRAM, "Draco's parallelogram prediction"},
+      {"multi_parallelogram", UvPrediction::kMultiParallelogram,
+       MESH_PREDICTION_CONSTRAINED_MULTI_PARALLELOGRAM,
+       "Draco's constrained multi-parallelogram prediction"},
+      {"portable", UvPrediction::kPortable,
+       MESH_PREDICTION_TEX_COORDS_PORTABLE,
+       "Draco's TEX_COORDS_PORTABLE prediction"},
+      {"weighted", UvPrediction::kWeighted,
+       MESH_PREDICTION_TEX_COORDS_WEIGHTED,
+       "mesh-guided weighted parallelogram (draco-uv)"},
+      {"weighted_multi", UvPrediction::kWeightedMulti,
+       MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI,
+       "weighted, all stencils: smaller, slower to decode"},
+      {"laplacian_tutte", UvPrediction::kLaplacianTutte,
+       MESH_PREDICTION_TEX_COORDS_LAPLACIAN,
+       "lossy Laplacian coding, Tutte weights (draco-uv)"},
+      {"laplacian_cotan", UvPrediction::kLaplacianCotan,
+       MESH_PREDICTION_TEX_COORDS_LAPLACIAN,
+       "lossy Laplacian coding, cotangent weights (draco-uv)"},
+      {"laplacian_mv", UvPrediction::kLaplacianMeanValue,
+       MESH_PREDICTION_TEX_COORDS_LAPLACIAN,
+       "lossy Laplacian coding, mean-value weights (draco-uv)"},
+      {"auto", UvPrediction::kAuto, PREDICTION_UNDEFINED,
+       "smallest of the lossless schemes above but weighted_multi"},
+  };
+  return names;
+}
+
+const char *UvPredictionNameOf(UvPrediction prediction) {
+  for (const UvPredictionName &entry : UvPredictionNames()) {
+    if (entry.prediction == prediction) {
+      return entry.name;
+    }
+  }
+  DRACO_DCHECK(false);
+  return "?";
+}
+
+std::string UvPredictionNameOf(PredictionSchemeMethod method) {
+  for (const UvPredictionName &entry : UvPredictionNames()) {
+    if (entry.method == method) {
+      return entry.name;
+    }
+  }
+  return std::to_string(static_cast<int>(method));
+}
+
+PredictionSchemeMethod UvPredictionMethod(UvPrediction prediction) {
+  for (const UvPredictionName &entry : UvPredictionNames()) {
+    if (entry.prediction == prediction) {
+      return entry.method;
+    }
+  }
+  return PREDICTION_UNDEFINED;
+}
+
+bool IsUvLaplacian(UvPrediction prediction) {
+  return IsLossyUvPrediction(UvPredictionMethod(prediction));
+}
+
+bool IsLossyUvPrediction(PredictionSchemeMethod method) {
+  return method == MESH_PREDICTION_TEX_COORDS_LAPLACIAN;
+}
+
+bool UvPredictionNeedsQuantizedPositions(PredictionSchemeMethod method) {
+  return method == MESH_PREDICTION_TEX_COORDS_PORTABLE ||
+         method == MESH_PREDICTION_TEX_COORDS_WEIGHTED ||
+         method == MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI ||
+         method == MESH_PREDICTION_TEX_COORDS_LAPLACIAN;
+}
+
+bool HasUvLaplacianCoder() {
+#ifdef DRACO_UV_LAPLACIAN
+  return true;
+#else
+  return false;
+#endif
+}
+
+StatusOr<UvPrediction> ParseUvPredictionName(const std::string &name) {
+  DRACO_ASSIGN_OR_RETURN(const UvPredictionName *entry,
+                         FindName(UvPredictionNames(), name, kPredictionFlag));
+  return entry->prediction;
+}
+
+StatusOr<UvSeamCoding> ParseUvSeamCodingName(const std::string &name) {
+  DRACO_ASSIGN_OR_RETURN(const UvSeamCodingName *entry,
+                         FindName(kSeamCodingNames, name, kSeamsFlag));
+  return entry->coding;
+}
+
+const char *UvSeamCodingNameOf(UvSeamCoding coding) {
+  return kSeamCodingNames[static_cast<int>(coding)].name;
+}
+
+StatusOr<UvAnchorSpec> ParseUvAnchorSpec(const std::string &spec) {
+  UvAnchorSpec parsed;
+  parsed.random = spec.rfind(kRandomPrefix, 0) == 0;
+  const std::string amount =
+      parsed.random ? spec.substr(sizeof(kRandomPrefix) - 1) : spec;
+  parsed.is_percent = ParsePercent(amount, &parsed.percent);
+  if (!parsed.is_percent && !ParseCount(amount, &parsed.count)) {
+    return Status(Status::DRACO_ERROR,
+                  "Bad -uv_anchors value '" + spec +
+                      "': use K, P% or random:K, random:P% (K >= 0, "
+                      "0 <= P <= 100).");
+  }
+  return parsed;
+}
+
+Status CheckUvCompressionOptions(const UvCompressionOptions &options) {
+  if (IsUvLaplacian(options.prediction) && !HasUvLaplacianCoder()) {
+    return ErrorStatus(std::string("-uv_pred ") +
+                       UvPredictionNameOf(options.prediction) +
+                       ": this build has no Laplacian coder "
+                       "(DRACO_UV_LAPLACIAN=OFF).");
+  }
+  if (options.anchors.has_value() && !IsUvLaplacian(options.prediction)) {
     return ErrorStatus(
         "-uv_anchors needs -uv_pred laplacian_tutte, laplacian_cotan or "
         "laplacian_mv.");
   }
   return OkStatus();
-}
-
-}  // namespace
-
-bool UvCompressionOptions::IsStock() const {
-  return IsStockPredictionName(prediction) && IsStockPredictionName(seams);
-}
-
-Status CheckUvCompressionOptions(const DracoCompressionOptions &options) {
-  DRACO_RETURN_IF_ERROR(CheckUvPrediction(options));
-  DRACO_RETURN_IF_ERROR(CheckUvAnchors(options));
-  return CheckUvSeams(options);
 }
 
 bool IsUvCompressionFlag(const char *arg) {
@@ -111,24 +248,65 @@ Status ParseUvCompressionFlag(int argc, char **argv, int *index,
   }
   const std::string value = argv[++*index];
   if (flag == kSeamsFlag) {
-    DRACO_RETURN_IF_ERROR(ParseUvSeamCodingName(value).status());
-    options->seams = value;
-    return OkStatus();
+    DRACO_ASSIGN_OR_RETURN(options->seams, ParseUvSeamCodingName(value));
+  } else if (flag == kAnchorsFlag) {
+    DRACO_ASSIGN_OR_RETURN(options->anchors, ParseUvAnchorSpec(value));
+  } else {
+    DRACO_ASSIGN_OR_RETURN(options->prediction, ParseUvPredictionName(value));
   }
-  if (flag == kAnchorsFlag) {
-    DRACO_RETURN_IF_ERROR(ParseUvAnchorSpec(value).status());
-    options->anchors = value;
-    return OkStatus();
-  }
-  DRACO_RETURN_IF_ERROR(ParseUvPredictionName(value).status());
-  options->prediction = value;
   return OkStatus();
 }
 
 std::string UvCompressionUsage() {
-  return UvPredictionUsage() + UvSeamCodingUsage();
+  const std::vector<UvPredictionName> &names = UvPredictionNames();
+  return "  -uv_pred <name>       prediction of TEX_COORD attributes "
+         "(needs -cl 1..10):\n" +
+         NameLines(names.data(), names.data() + names.size()) +
+         "  -uv_anchors <K>       extra anchors of -uv_pred laplacian_*, "
+         "chosen\n"
+         "                          greedily (default 50); <P>% scales them "
+         "with the mesh\n"
+         "                          (P percent of its texture coordinates, "
+         "e.g. 2%);\n"
+         "                          random:<K> or random:<P>% picks them at "
+         "random\n"
+         "  -uv_seams <name>      coding of attribute seams (needs -cl 5..10 "
+         "to matter):\n" +
+         NameLines(std::begin(kSeamCodingNames), std::end(kSeamCodingNames));
 }
 
-}  // namespace draco
-
+#ifdef DRACO_TRANSCODER_SUPPORTED
+Status CheckUvCompressionOptions(const DracoCompressionOptions &options) {
+  const UvCompressionOptions &uv = options.uv;
+  DRACO_RETURN_IF_ERROR(CheckUvCompressionOptions(uv));
+  if (uv.IsStock()) {
+    return OkStatus();
+  }
+  if (options.compression_level < 1) {
+    return ErrorStatus(std::string(uv.prediction != UvPrediction::kDraco
+                                       ? kPredictionFlag
+                                       : kSeamsFlag) +
+                       " needs Edgebreaker encoding: compression level 1 or "
+                       "more.");
+  }
+  if (uv.prediction == UvPrediction::kDraco) {
+    return OkStatus();
+  }
+  if (options.quantization_bits_tex_coord <= 0) {
+    return ErrorStatus("-uv_pred needs quantized texture coordinates.");
+  }
+  const bool positions_quantized =
+      !options.quantization_position.AreQuantizationBitsDefined() ||
+      options.quantization_position.quantization_bits() > 0;
+  const PredictionSchemeMethod method = UvPredictionMethod(uv.prediction);
+  if (!positions_quantized && uv.prediction != UvPrediction::kAuto &&
+      UvPredictionNeedsQuantizedPositions(method)) {
+    return ErrorStatus(std::string("-uv_pred ") +
+                       UvPredictionNameOf(uv.prediction) +
+                       " needs quantized positions.");
+  }
+  return OkStatus();
+}
 #endif  // DRACO_TRANSCODER_SUPPORTED
+
+}  // namespace draco

@@ -12,46 +12,86 @@
 // See the License for the specific language governing permissions and
 // limitations under the License.
 //
-// draco-uv's part of DracoCompressionOptions, the per-mesh compression
-// settings of Draco's scene and glTF pipeline (draco_transcoder). Draco's
-// compression options header includes this one (patches/0014), so it
-// depends on nothing but Draco's Status.
+// UvCompressionOptions: everything draco-uv adds to a mesh's compression
+// settings, typed, parsed once from a command line (-uv_pred, -uv_seams,
+// -uv_anchors), from glTF options (DracoCompressionOptions::uv) or set from
+// C++, and applied to a Draco encoder in one place, ConfigureUvCompression()
+// (uv_configure.h). Default-constructed it changes nothing: output stays
+// byte-identical to stock Draco.
 //
-// Extension point: a new per-mesh draco-uv option (such as -uv_seams) is a
-// field of UvCompressionOptions, a branch of ParseUvCompressionFlag(), a
-// check in CheckUvCompressionOptions() and its application in
-// ConfigureUvCompressionForGltf() (uv_gltf.h); no patch changes.
+//   -uv_pred <name>     prediction of every TEX_COORD attribute
+//     draco               stock Draco's own choice (the default)
+//     parallelogram, multi_parallelogram, portable
+//                         Draco's own schemes, forced
+//     weighted            mesh-guided weighted parallelogram (draco-uv)
+//     weighted_multi      weighted with every stencil: smaller, slower
+//     laplacian_tutte, laplacian_cotan, laplacian_mv
+//                         lossy Laplacian coding (draco-uv; builds with
+//                         DRACO_UV_LAPLACIAN only)
+//     auto                per attribute, the smallest lossless scheme that
+//                         decodes about as fast as stock Draco
+//   -uv_seams draco|context
+//                       coding of attribute seams (context: draco-uv's
+//                       context-modelled crease bits)
+//   -uv_anchors K|P%|random:K|random:P%
+//                       extra anchors of the Laplacian names (default 50)
+//
+// Draco's compression options header includes this one (patches/0008), so
+// it depends on nothing but Draco's status and compression ids.
 #ifndef DRACO_EXT_OPTIONS_UV_COMPRESSION_OPTIONS_H_
 #define DRACO_EXT_OPTIONS_UV_COMPRESSION_OPTIONS_H_
 
-#include "draco/draco_features.h"
-
-#ifdef DRACO_TRANSCODER_SUPPORTED
+#include <cstdint>
+#include <optional>
 #include <string>
+#include <vector>
 
+#include "draco/compression/config/compression_shared.h"
 #include "draco/core/status.h"
+#include "draco/core/status_or.h"
+#include "draco/draco_features.h"
 
 namespace draco {
 
-struct DracoCompressionOptions;
+enum class UvPrediction : uint8_t {
+  kDraco,
+  kParallelogram,
+  kMultiParallelogram,
+  kPortable,
+  kWeighted,
+  kWeightedMulti,
+  kLaplacianTutte,
+  kLaplacianCotan,
+  kLaplacianMeanValue,
+  kAuto,
+};
 
-// How the texture coordinates of a mesh are compressed beyond stock Draco.
-// Default-constructed, it changes nothing: output stays byte-identical to
-// stock Draco.
+enum class UvSeamCoding : uint8_t { kDraco = 0, kContext = 1 };
+
+// A parsed -uv_anchors value.
+struct UvAnchorSpec {
+  bool random = false;
+  bool is_percent = false;
+  int count = 0;       // K, when !is_percent.
+  double percent = 0;  // P, when is_percent.
+
+  bool operator==(const UvAnchorSpec &other) const {
+    return random == other.random && is_percent == other.is_percent &&
+           count == other.count && percent == other.percent;
+  }
+};
+
 struct UvCompressionOptions {
-  // A -uv_pred name (uv_prediction_options.h); empty or "draco" keeps stock
-  // Draco's choice.
-  std::string prediction;
-  // A -uv_seams name (uv_seam_options.h); empty or "draco" keeps stock
-  // Draco's seam coding.
-  std::string seams;
-  // A -uv_anchors value (uv_laplacian_options.h) for the Laplacian
-  // -uv_pred names; empty keeps the default 50 greedy anchors.
-  std::string anchors;
+  UvPrediction prediction = UvPrediction::kDraco;
+  UvSeamCoding seams = UvSeamCoding::kDraco;
+  // Extra anchors of the Laplacian predictions; unset keeps the default.
+  std::optional<UvAnchorSpec> anchors;
 
   // True when no draco-uv feature is requested.
-  bool IsStock() const;
-
+  bool IsStock() const {
+    return prediction == UvPrediction::kDraco &&
+           seams == UvSeamCoding::kDraco;
+  }
   bool operator==(const UvCompressionOptions &other) const {
     return prediction == other.prediction && seams == other.seams &&
            anchors == other.anchors;
@@ -61,28 +101,71 @@ struct UvCompressionOptions {
   }
 };
 
-// Checks |options.uv| against the rest of |options|: a known -uv_pred name,
-// and for anything but stock Draco Edgebreaker encoding (compression level
-// 1 or more), quantized texture coordinates and, for the methods that need
-// them, quantized positions; a known -uv_seams name, and for context
-// Edgebreaker encoding; a valid -uv_anchors value, only with a Laplacian
-// -uv_pred name. Called by DracoCompressionOptions::Check().
-Status CheckUvCompressionOptions(const DracoCompressionOptions &options);
+// One -uv_pred name: the prediction and the Draco scheme it stands for
+// (PREDICTION_UNDEFINED for "draco", which lets Draco choose, and "auto").
+struct UvPredictionName {
+  const char *name;
+  UvPrediction prediction;
+  PredictionSchemeMethod method;
+  const char *description;
+};
 
-// Command-line flags of draco-uv for tools built on DracoCompressionOptions
-// (draco_transcoder): true when |arg| is one of them.
+// All -uv_pred names, in the order -h lists them; the only table of them.
+const std::vector<UvPredictionName> &UvPredictionNames();
+// The -uv_pred name of |prediction|.
+const char *UvPredictionNameOf(UvPrediction prediction);
+// The -uv_pred name of a Draco scheme ("draco" for PREDICTION_UNDEFINED,
+// the number for ids without a name).
+std::string UvPredictionNameOf(PredictionSchemeMethod method);
+// The Draco scheme |prediction| sets (PREDICTION_UNDEFINED for kDraco and
+// kAuto).
+PredictionSchemeMethod UvPredictionMethod(UvPrediction prediction);
+// True for the three lossy Laplacian predictions.
+bool IsUvLaplacian(UvPrediction prediction);
+// True for the prediction schemes whose decoded values differ from the
+// quantised input.
+bool IsLossyUvPrediction(PredictionSchemeMethod method);
+// True for the schemes that predict from quantized positions.
+bool UvPredictionNeedsQuantizedPositions(PredictionSchemeMethod method);
+// True when this build has the Laplacian coder (DRACO_UV_LAPLACIAN).
+bool HasUvLaplacianCoder();
+
+// Name parsers; an unknown name is an error that lists the valid ones.
+StatusOr<UvPrediction> ParseUvPredictionName(const std::string &name);
+StatusOr<UvSeamCoding> ParseUvSeamCodingName(const std::string &name);
+const char *UvSeamCodingNameOf(UvSeamCoding coding);
+// Parses "K", "P%", "random:K" or "random:P%" (0 <= K <= 2^24,
+// 0 <= P <= 100).
+StatusOr<UvAnchorSpec> ParseUvAnchorSpec(const std::string &spec);
+
+// The options on their own: -uv_anchors only with a Laplacian -uv_pred, and
+// a Laplacian -uv_pred only in a build with the Laplacian coder. Every
+// entry point checks this before it encodes.
+Status CheckUvCompressionOptions(const UvCompressionOptions &options);
+
+// True when |arg| is one of draco-uv's command-line flags.
 bool IsUvCompressionFlag(const char *arg);
 
 // Parses the flag argv[*index] and its value argv[*index + 1] into
 // |options| and leaves *index on the value. Fails when the value is missing
-// or invalid (the message lists the valid names).
+// or invalid (the message lists the valid values).
 Status ParseUvCompressionFlag(int argc, char **argv, int *index,
                               UvCompressionOptions *options);
 
 // Help text of the flags, one line per flag and value.
 std::string UvCompressionUsage();
 
+#ifdef DRACO_TRANSCODER_SUPPORTED
+struct DracoCompressionOptions;
+
+// CheckUvCompressionOptions(options.uv), and what the rest of |options|
+// must allow: Edgebreaker encoding (compression level 1 or more) for
+// anything but stock Draco, quantized texture coordinates for -uv_pred and,
+// for the schemes that predict from them, quantized positions. Called by
+// DracoCompressionOptions::Check().
+Status CheckUvCompressionOptions(const DracoCompressionOptions &options);
+#endif  // DRACO_TRANSCODER_SUPPORTED
+
 }  // namespace draco
 
-#endif  // DRACO_TRANSCODER_SUPPORTED
 #endif  // DRACO_EXT_OPTIONS_UV_COMPRESSION_OPTIONS_H_

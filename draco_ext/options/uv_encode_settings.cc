@@ -16,9 +16,7 @@
 
 #include "draco/compression/encode.h"
 #include "draco/compression/expert_encode.h"
-#include "draco_ext/options/uv_laplacian_options.h"
-#include "draco_ext/options/uv_prediction_options.h"
-#include "draco_ext/options/uv_seam_options.h"
+#include "draco_ext/options/uv_configure.h"
 
 namespace draco {
 
@@ -47,13 +45,10 @@ Status EncodeMeshWithSettings(const Mesh &mesh,
   encoder.SetSpeedOptions(speed, speed);
   ExpertEncoder expert(mesh);
   expert.Reset(encoder.CreateExpertEncoderOptions(mesh));
-  DRACO_ASSIGN_OR_RETURN(const std::string seam_summary,
-                         ConfigureUvSeams(settings.uv_seams, &mesh, &expert));
   DRACO_ASSIGN_OR_RETURN(const std::string uv_summary,
-                         ConfigureUvPrediction(settings.uv_pred, &mesh, &expert));
-  DRACO_RETURN_IF_ERROR(ConfigureUvAnchors(settings.uv_anchors, &mesh, &expert));
+                         ConfigureUvCompression(settings.uv, &mesh, &expert));
   if (summary != nullptr) {
-    *summary = seam_summary + uv_summary;
+    *summary = uv_summary;
   }
   return expert.EncodeToBuffer(out);
 }

@@ -23,6 +23,7 @@
 #include "draco/core/encoder_buffer.h"
 #include "draco/core/status.h"
 #include "draco/mesh/mesh.h"
+#include "draco_ext/options/uv_compression_options.h"
 
 namespace draco {
 
@@ -31,15 +32,12 @@ struct UvEncodeSettings {
   int qp = 14;
   int qt = 12;
   int cl = 10;
-  std::string uv_pred;     // -uv_pred; empty means stock Draco.
-  std::string uv_seams;    // -uv_seams; empty means stock Draco.
-  std::string uv_anchors;  // -uv_anchors; empty means the default.
+  UvCompressionOptions uv;  // -uv_pred, -uv_seams, -uv_anchors.
 };
 
 // Encodes |mesh| like
 // `draco_encoder -qp -qt -cl [-uv_pred] [-uv_seams] [-uv_anchors]` into
-// |out|. |summary|, if given, receives the summaries of ConfigureUvSeams()
-// and ConfigureUvPrediction().
+// |out|. |summary|, if given, receives ConfigureUvCompression()'s summary.
 Status EncodeMeshWithSettings(const Mesh &mesh,
                               const UvEncodeSettings &settings,
                               EncoderBuffer *out,

@@ -12,69 +12,38 @@
 // See the License for the specific language governing permissions and
 // limitations under the License.
 //
-// The encoder settings of the lossy Laplacian texture coordinate scheme
-// (MESH_PREDICTION_TEX_COORDS_LAPLACIAN):
-//   -uv_pred laplacian_tutte | laplacian_cotan | laplacian_mv
-//       the Laplacian (eq. 6-8 of [Váša & Brunnett 2014]); -qt sets the
-//       quantisation step of its residuals, range / (2^qt - 1);
-//   -uv_anchors K | P% | random:K | random:P%
-//       K extra anchors, greedy by largest error (default 50) or random;
-//       P% sets K to P percent of the attribute's texture coordinates.
-// Lossy: -uv_pred auto never picks these names.
+// -uv_pred laplacian_* and -uv_anchors on a Draco encoder: the settings of
+// the lossy Laplacian scheme (eq. 6-8 of [Váša & Brunnett 2014]) for one
+// TEX_COORD attribute. -qt sets the quantisation step of its residuals,
+// range / (2^qt - 1); K extra anchors are chosen greedily by largest error
+// (default 50) or at random; P% sets K to P percent of the attribute's
+// texture coordinates. Called by ConfigureUvPrediction().
 #ifndef DRACO_EXT_OPTIONS_UV_LAPLACIAN_OPTIONS_H_
 #define DRACO_EXT_OPTIONS_UV_LAPLACIAN_OPTIONS_H_
 
-#include <string>
+#include <optional>
 
-#include "draco/compression/config/compression_shared.h"
 #include "draco/compression/expert_encode.h"
 #include "draco/core/status.h"
-#include "draco/core/status_or.h"
 #include "draco/mesh/mesh.h"
+#include "draco_ext/options/uv_compression_options.h"
 
 namespace draco {
 
-// True for prediction schemes whose decoded values differ from the
-// quantised input.
-bool IsLossyUvPrediction(PredictionSchemeMethod method);
-
-// True for the -uv_pred names of the Laplacian scheme.
-bool IsUvLaplacianName(const std::string &name);
-
-// Sets up attribute |att_id| of |encoder| for -uv_pred |name| (a Laplacian
-// name): the operator, the step from the attribute's quantisation bits (the
-// user's -qt, 1 to 20) and a finer quantisation frame for Draco (see
-// MeshPredictionSchemeTexCoordsLaplacianEncoder). Call once, after the
+// Sets up attribute |att_id| of |mesh| on |encoder| for the Laplacian
+// |prediction|: the operator, the step from the attribute's quantisation
+// bits (the user's -qt, 1 to 20), a finer quantisation frame for Draco, and
+// the extra anchors of |anchors| (the default without). Call once, after the
 // prediction scheme is set.
-Status ConfigureUvLaplacian(const std::string &name, int att_id,
+Status ConfigureUvLaplacian(UvPrediction prediction,
+                            const std::optional<UvAnchorSpec> &anchors,
+                            const Mesh &mesh, int att_id,
                             ExpertEncoder *encoder);
 
-// A parsed -uv_anchors value.
-struct UvAnchorSpec {
-  bool random = false;
-  bool is_percent = false;
-  int count = 0;        // K, when !is_percent.
-  double percent = 0;   // P, when is_percent.
-};
-
-// Parses "K", "P%", "random:K" or "random:P%" (0 <= K <= 2^24,
-// 0 <= P <= 100).
-StatusOr<UvAnchorSpec> ParseUvAnchorSpec(const std::string &spec);
-
-// Applies -uv_anchors |spec| (ParseUvAnchorSpec()) to every TEX_COORD
-// attribute of |mesh| that uses the Laplacian scheme; P% becomes
-// ceil(P / 100 * the attribute's number of values). Returns how many
-// attributes it set (0 for an empty spec, which changes nothing).
-StatusOr<int> ApplyUvAnchors(const std::string &spec, const Mesh *mesh,
-                             ExpertEncoder *encoder);
-
-// ApplyUvAnchors() for a command line: a spec without any such attribute
-// is an error.
-Status ConfigureUvAnchors(const std::string &spec, const Mesh *mesh,
-                          ExpertEncoder *encoder);
-
-// Help text of -uv_anchors for the tools' -h.
-std::string UvAnchorsUsage();
+// The number of extra anchors |spec| asks for on an attribute of
+// |num_values| texture coordinates; a percentage is rounded up, so that
+// any positive one gives at least one anchor.
+int UvAnchorCount(const UvAnchorSpec &spec, int64_t num_values);
 
 }  // namespace draco
 

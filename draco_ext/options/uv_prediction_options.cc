@@ -19,14 +19,13 @@
 #include <vector>
 
 #include "draco/core/encoder_buffer.h"
+#include "draco_ext/common/uv_prediction_ids.h"
 #include "draco_ext/options/uv_laplacian_options.h"
 #include "draco_ext/weighted/uv_stencil_geometry.h"
 
 namespace draco {
 
 namespace {
-
-constexpr char kAutoName[] = "auto";
 
 // At speed 10 (-cl 0) Draco encodes meshes sequentially, without the
 // connectivity that mesh prediction schemes need.
@@ -150,7 +149,7 @@ StatusOr<size_t> EncodedSize(ExpertEncoder *encoder) {
 std::vector<PredictionSchemeMethod> AutoCandidates() {
   std::vector<PredictionSchemeMethod> candidates;
   for (const UvPredictionName &entry : UvPredictionNames()) {
-    if (std::string(entry.name) != kAutoName &&
+    if (entry.prediction != UvPrediction::kAuto &&
         entry.method != MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI &&
         !IsLossyUvPrediction(entry.method)) {
       candidates.push_back(entry.method);
@@ -190,98 +189,21 @@ StatusOr<std::string> ChooseSmallestFor(const Mesh &mesh, int att_id,
 
 }  // namespace
 
-const std::vector<UvPredictionName> &UvPredictionNames() {
-  static const std::vector<UvPredictionName> names = {
-      {"draco", PREDICTION_UNDEFINED, "stock Draco's choice (default)"},
-      {"parallelogram", MESH_PREDICTION_PARALLELOGRAM,
-       "Draco's parallelogram prediction"},
-      {"multi_parallelogram", MESH_PREDICTION_CONSTRAINED_MULTI_PARALLELOGRAM,
-       "Draco's constrained multi-parallelogram prediction"},
-      {"portable", MESH_PREDICTION_TEX_COORDS_PORTABLE,
-       "Draco's TEX_COORDS_PORTABLE prediction"},
-      {"weighted", MESH_PREDICTION_TEX_COORDS_WEIGHTED,
-       "mesh-guided weighted parallelogram (draco-uv)"},
-      {"weighted_multi", MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI,
-       "weighted, all stencils: smaller, slower to decode"},
-      {"laplacian_tutte", MESH_PREDICTION_TEX_COORDS_LAPLACIAN,
-       "lossy Laplacian coding, Tutte weights (draco-uv)"},
-      {"laplacian_cotan", MESH_PREDICTION_TEX_COORDS_LAPLACIAN,
-       "lossy Laplacian coding, cotangent weights (draco-uv)"},
-      {"laplacian_mv", MESH_PREDICTION_TEX_COORDS_LAPLACIAN,
-       "lossy Laplacian coding, mean-value weights (draco-uv)"},
-      {kAutoName, PREDICTION_UNDEFINED,
-       "smallest of the lossless schemes above but weighted_multi"},
-  };
-  return names;
-}
-
-std::string UvPredictionUsage() {
-  std::string usage =
-      "  -uv_pred <name>       prediction of TEX_COORD attributes "
-      "(needs -cl 1..10):\n";
-  for (const UvPredictionName &entry : UvPredictionNames()) {
-    std::string line = "                          " + std::string(entry.name);
-    line.resize(std::max<size_t>(line.size() + 1, 48), ' ');
-    usage += line + entry.description + "\n";
-  }
-  return usage + UvAnchorsUsage();
-}
-
-bool IsAutoUvPrediction(const std::string &name) { return name == kAutoName; }
-
-StatusOr<PredictionSchemeMethod> ParseUvPredictionName(
-    const std::string &name) {
-  std::string valid;
-  for (const UvPredictionName &entry : UvPredictionNames()) {
-    if (name == entry.name) {
-      return entry.method;
-    }
-    valid += (valid.empty() ? "" : ", ") + std::string(entry.name);
-  }
-  return Status(Status::DRACO_ERROR, "Unknown -uv_pred name '" + name +
-                                         "'. Valid names: " + valid + ".");
-}
-
-std::string UvPredictionNameOf(PredictionSchemeMethod method) {
-  for (const UvPredictionName &entry : UvPredictionNames()) {
-    if (entry.method == method) {
-      return entry.name;
-    }
-  }
-  return std::to_string(static_cast<int>(method));
-}
-
-bool UvPredictionNeedsQuantizedPositions(PredictionSchemeMethod method) {
-  return method == MESH_PREDICTION_TEX_COORDS_PORTABLE || IsWeighted(method) ||
-         method == MESH_PREDICTION_TEX_COORDS_LAPLACIAN;
-}
-
-bool IsDracoUvPredictionMethod(PredictionSchemeMethod method) {
-  // MESH_PREDICTION_GEOMETRIC_NORMAL is the last id of stock Draco 1.5.5 to
-  // 1.5.7; draco-uv's ids follow it (patches/0001).
-  return method > MESH_PREDICTION_GEOMETRIC_NORMAL &&
-         method < NUM_PREDICTION_SCHEMES;
-}
-
-StatusOr<std::string> ConfigureUvPrediction(const std::string &name,
-                                            const Mesh *mesh,
-                                            ExpertEncoder *encoder) {
-  if (name.empty()) {
-    return std::string();
-  }
-  DRACO_ASSIGN_OR_RETURN(const PredictionSchemeMethod method,
-                         ParseUvPredictionName(name));
-  if (name == "draco") {
+StatusOr<std::string> ConfigureUvPrediction(
+    const UvCompressionOptions &options, const Mesh *mesh,
+    ExpertEncoder *encoder) {
+  if (options.prediction == UvPrediction::kDraco) {
     return std::string();
   }
   if (mesh == nullptr) {
     return Status(Status::DRACO_ERROR,
                   "-uv_pred applies to meshes, not to point clouds.");
   }
+  const PredictionSchemeMethod method = UvPredictionMethod(options.prediction);
   std::string summary;
   for (const int att_id : TexCoordAttributeIds(*mesh)) {
     DRACO_RETURN_IF_ERROR(CheckCommonSettings(*encoder, att_id));
-    if (IsAutoUvPrediction(name)) {
+    if (options.prediction == UvPrediction::kAuto) {
       DRACO_ASSIGN_OR_RETURN(const std::string line,
                              ChooseSmallestFor(*mesh, att_id, encoder));
       summary += line;
@@ -289,11 +211,12 @@ StatusOr<std::string> ConfigureUvPrediction(const std::string &name,
     }
     DRACO_RETURN_IF_ERROR(CheckSettingsFor(method, *mesh, *encoder, att_id));
     DRACO_RETURN_IF_ERROR(encoder->SetAttributePredictionScheme(att_id, method));
-    if (IsUvLaplacianName(name)) {
-      DRACO_RETURN_IF_ERROR(ConfigureUvLaplacian(name, att_id, encoder));
+    if (IsUvLaplacian(options.prediction)) {
+      DRACO_RETURN_IF_ERROR(ConfigureUvLaplacian(
+          options.prediction, options.anchors, *mesh, att_id, encoder));
     }
     summary += "UV prediction: " + AttributeLabel(*mesh, att_id) + " -> " +
-               name + "\n";
+               UvPredictionNameOf(options.prediction) + "\n";
   }
   return summary;
 }

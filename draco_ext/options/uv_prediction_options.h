@@ -12,80 +12,36 @@
 // See the License for the specific language governing permissions and
 // limitations under the License.
 //
-// The -uv_pred contract shared by draco_encoder, draco_transcoder and
-// draco_uv_eval: a name selects the prediction scheme of every TEX_COORD
-// attribute of a mesh.
-//
-//   draco            stock Draco's own choice (the default; changes nothing)
-//   parallelogram    MESH_PREDICTION_PARALLELOGRAM
-//   multi_parallelogram
-//                    MESH_PREDICTION_CONSTRAINED_MULTI_PARALLELOGRAM
-//   portable         MESH_PREDICTION_TEX_COORDS_PORTABLE
-//   weighted         MESH_PREDICTION_TEX_COORDS_WEIGHTED (draco-uv), decodes
-//                    as fast as stock Draco
-//   weighted_multi   MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI: weighted
-//                    with every stencil; smaller, slower to decode
-//   laplacian_tutte, laplacian_cotan, laplacian_mv
-//                    MESH_PREDICTION_TEX_COORDS_LAPLACIAN (draco-uv, lossy:
-//                    see uv_laplacian_options.h)
-//   auto             per attribute, the smallest of the lossless schemes
-//                    above that decode as fast as stock (all but
-//                    weighted_multi and the Laplacians)
+// -uv_pred on a Draco encoder: sets the prediction scheme of every TEX_COORD
+// attribute of a mesh, after checking that the encoder's settings allow it;
+// -uv_pred auto encodes once per candidate and keeps the smallest. Called by
+// ConfigureUvCompression() (uv_configure.h), the one place that applies
+// UvCompressionOptions.
 #ifndef DRACO_EXT_OPTIONS_UV_PREDICTION_OPTIONS_H_
 #define DRACO_EXT_OPTIONS_UV_PREDICTION_OPTIONS_H_
 
 #include <string>
-#include <vector>
 
-#include "draco/compression/config/compression_shared.h"
 #include "draco/compression/expert_encode.h"
 #include "draco/core/status_or.h"
 #include "draco/mesh/mesh.h"
+#include "draco_ext/options/uv_compression_options.h"
 
 namespace draco {
 
-// One -uv_pred name and the prediction scheme it stands for. |method| is
-// PREDICTION_UNDEFINED for "draco" (Draco chooses) and for "auto".
-struct UvPredictionName {
-  const char *name;
-  PredictionSchemeMethod method;
-  const char *description;
-};
-
-// All names, in the order -h lists them.
-const std::vector<UvPredictionName> &UvPredictionNames();
-
-// Help text for the tools' -h.
-std::string UvPredictionUsage();
-
-// Resolves |name| to a prediction method. "auto" resolves to
-// PREDICTION_UNDEFINED too; check IsAutoUvPrediction() first. An unknown name
-// is an error listing the valid names.
-StatusOr<PredictionSchemeMethod> ParseUvPredictionName(const std::string &name);
-bool IsAutoUvPrediction(const std::string &name);
-
-// The -uv_pred name of |method| as a UV prediction ("draco" for
-// PREDICTION_UNDEFINED, or the numeric id for methods without a name).
-std::string UvPredictionNameOf(PredictionSchemeMethod method);
-
-// True for the methods that predict from quantized positions.
-bool UvPredictionNeedsQuantizedPositions(PredictionSchemeMethod method);
-
-// True for the prediction scheme ids that stock Draco does not define (all
-// of draco-uv's): a file using one needs a decoder with draco-uv.
-bool IsDracoUvPredictionMethod(PredictionSchemeMethod method);
-
-// Applies -uv_pred |name| to every TEX_COORD attribute of |mesh| on
-// |encoder|, whose options must already be set. An empty name or "draco"
-// leaves the encoder untouched, so the output stays byte-identical to stock
-// Draco. "auto" encodes the mesh once per candidate and attribute and keeps
-// the smallest. Fails on an unknown name, on a point cloud (|mesh| null),
-// and on settings under which the scheme cannot work (sequential encoding at
-// -cl 0, unquantised positions or texture coordinates). Returns a one-line
-// summary per attribute for the tools to print ("" when nothing changed).
-StatusOr<std::string> ConfigureUvPrediction(const std::string &name,
-                                            const Mesh *mesh,
-                                            ExpertEncoder *encoder);
+// Applies options.prediction to every TEX_COORD attribute of |mesh| on
+// |encoder|, whose options must already be set; the Laplacian predictions
+// also get options.anchors (uv_laplacian_options.h). kDraco leaves the
+// encoder untouched, so the output stays byte-identical to stock Draco.
+// kAuto encodes the mesh once per candidate and attribute and keeps the
+// smallest. Fails on a point cloud (|mesh| null) and on settings under which
+// the scheme cannot work (sequential encoding at -cl 0, unquantised
+// positions or texture coordinates, NaN or infinite values). Returns a
+// one-line summary per attribute for the tools to print ("" when nothing
+// changed).
+StatusOr<std::string> ConfigureUvPrediction(
+    const UvCompressionOptions &options, const Mesh *mesh,
+    ExpertEncoder *encoder);
 
 }  // namespace draco
 

@@ -14,7 +14,7 @@
 //
 #include "draco_ext/options/uv_seam_options.h"
 
-#include <algorithm>
+#include "draco/compression/config/compression_shared.h"
 
 namespace draco {
 
@@ -35,40 +35,6 @@ bool SplitsMeshOnSeams(const EncoderOptions &options) {
 
 }  // namespace
 
-const std::vector<UvSeamCodingName> &UvSeamCodingNames() {
-  static const std::vector<UvSeamCodingName> names = {
-      {"draco", UvSeamCoding::kDraco,
-       "stock Draco: a static-probability bit per edge (default)"},
-      {"context", UvSeamCoding::kContext,
-       "context-modelled crease bits (draco-uv)"},
-  };
-  return names;
-}
-
-std::string UvSeamCodingUsage() {
-  std::string usage =
-      "  -uv_seams <name>      coding of attribute seams (needs -cl 5..10 "
-      "to matter):\n";
-  for (const UvSeamCodingName &entry : UvSeamCodingNames()) {
-    std::string line = "                          " + std::string(entry.name);
-    line.resize(std::max<size_t>(line.size() + 1, 48), ' ');
-    usage += line + entry.description + "\n";
-  }
-  return usage;
-}
-
-StatusOr<UvSeamCoding> ParseUvSeamCodingName(const std::string &name) {
-  std::string valid;
-  for (const UvSeamCodingName &entry : UvSeamCodingNames()) {
-    if (name == entry.name) {
-      return entry.coding;
-    }
-    valid += (valid.empty() ? "" : ", ") + std::string(entry.name);
-  }
-  return Status(Status::DRACO_ERROR, "Unknown -uv_seams name '" + name +
-                                         "'. Valid names: " + valid + ".");
-}
-
 UvSeamCoding GetUvSeamCoding(const EncoderOptions &options) {
   return options.GetGlobalInt(kUvSeamCodingOption, 0) ==
                  static_cast<int>(UvSeamCoding::kContext)
@@ -76,14 +42,23 @@ UvSeamCoding GetUvSeamCoding(const EncoderOptions &options) {
              : UvSeamCoding::kDraco;
 }
 
-StatusOr<std::string> ConfigureUvSeams(const std::string &name,
-                                       const Mesh *mesh,
-                                       ExpertEncoder *encoder) {
-  if (name.empty()) {
-    return std::string();
+int UvSeamEdgebreakerMethodFor(const EncoderOptions &options,
+                               int stock_method) {
+  if (GetUvSeamCoding(options) != UvSeamCoding::kContext) {
+    return stock_method;
   }
-  DRACO_ASSIGN_OR_RETURN(const UvSeamCoding coding,
-                         ParseUvSeamCodingName(name));
+  switch (stock_method) {
+    case MESH_EDGEBREAKER_STANDARD_ENCODING:
+      return MESH_EDGEBREAKER_STANDARD_CONTEXT_SEAMS_ENCODING;
+    case MESH_EDGEBREAKER_VALENCE_ENCODING:
+      return MESH_EDGEBREAKER_VALENCE_CONTEXT_SEAMS_ENCODING;
+    default:
+      return stock_method;
+  }
+}
+
+StatusOr<std::string> ConfigureUvSeams(UvSeamCoding coding, const Mesh *mesh,
+                                       ExpertEncoder *encoder) {
   if (coding == UvSeamCoding::kDraco) {
     return std::string();
   }
@@ -107,7 +82,7 @@ StatusOr<std::string> ConfigureUvSeams(const std::string &name,
         "none; stock coding kept.\n");
   }
   SetUvSeamCoding(coding, &encoder->options());
-  return "UV seams: " + name + ", " + std::to_string(num_seam_sets) +
+  return std::string("UV seams: ") + UvSeamCodingNameOf(coding) + ", " + std::to_string(num_seam_sets) +
          " seam set(s)\n";
 }
 

@@ -31,7 +31,6 @@
 #include <memory>
 #include <vector>
 
-#include "draco/compression/config/encoder_options.h"
 #include "draco/compression/mesh/mesh_edgebreaker_decoder_impl_interface.h"
 #include "draco/compression/mesh/mesh_edgebreaker_encoder_impl_interface.h"
 #include "draco/mesh/corner_table.h"
@@ -39,10 +38,6 @@
 namespace draco {
 
 bool IsUvSeamEdgebreakerMethod(int method);
-
-// The Edgebreaker method to write: |stock_method| (standard or valence) or
-// its context-seams variant when |options| select -uv_seams context.
-int UvSeamEdgebreakerMethodFor(const EncoderOptions &options, int stock_method);
 
 // The implementations of the two methods; null for other ids.
 std::unique_ptr<MeshEdgebreakerEncoderImplInterface>

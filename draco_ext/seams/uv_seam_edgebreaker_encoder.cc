@@ -17,24 +17,8 @@
 #include "draco/compression/mesh/mesh_edgebreaker_encoder_impl.h"
 #include "draco_ext/seams/mesh_edgebreaker_traversal_uv_seam_encoder.h"
 #include "draco_ext/seams/uv_seam_edgebreaker.h"
-#include "draco_ext/options/uv_seam_options.h"
 
 namespace draco {
-
-int UvSeamEdgebreakerMethodFor(const EncoderOptions &options,
-                               int stock_method) {
-  if (GetUvSeamCoding(options) != UvSeamCoding::kContext) {
-    return stock_method;
-  }
-  switch (stock_method) {
-    case MESH_EDGEBREAKER_STANDARD_ENCODING:
-      return MESH_EDGEBREAKER_STANDARD_CONTEXT_SEAMS_ENCODING;
-    case MESH_EDGEBREAKER_VALENCE_ENCODING:
-      return MESH_EDGEBREAKER_VALENCE_CONTEXT_SEAMS_ENCODING;
-    default:
-      return stock_method;
-  }
-}
 
 std::unique_ptr<MeshEdgebreakerEncoderImplInterface>
 CreateUvSeamEdgebreakerEncoderImpl(int method) {

@@ -53,7 +53,7 @@ void Usage() {
       "Decoding time of each -uv_pred scheme against stock Draco, whole\n"
       "mesh from memory, minimum of interleaved rounds.\n"
       "\n"
-      "  --schemes LIST   -uv_pred names, default auto\n"
+      "  --schemes LIST   <uv_pred>[+<uv_seams>] names, default auto\n"
       "  --qp N --qt N --cl N   default 14, 12, 10\n"
       "  --threads LIST   thread caps for our files, default 2,1\n"
       "  --rounds N       decodes of every file, default 30\n");
@@ -109,19 +109,26 @@ double DecodeMs(const std::vector<char> &bytes) {
                    : -1.0;
 }
 
+// Encodes |mesh| with |settings| and the scheme |name| ("<uv_pred>[+<seams>]").
+draco::Status EncodeScheme(const draco::Mesh &mesh,
+                           draco::UvEncodeSettings settings,
+                           const std::string &name,
+                           draco::EncoderBuffer *buffer) {
+  DRACO_ASSIGN_OR_RETURN(settings.uv, draco::ParseUvSchemeName(name));
+  return draco::EncodeMeshWithSettings(mesh, settings, buffer);
+}
+
 // The files of |mesh|: stock Draco's first, then one per scheme.
 bool EncodeVariants(const draco::Mesh &mesh, const Args &args,
                     std::vector<std::vector<char>> *files) {
-  std::vector<std::string> names = {""};
+  std::vector<std::string> names = {"draco"};
   names.insert(names.end(), args.schemes.begin(), args.schemes.end());
   for (const std::string &name : names) {
-    draco::UvEncodeSettings settings = args.settings;
-    settings.uv_pred = name;
     draco::EncoderBuffer buffer;
     const draco::Status status =
-        draco::EncodeMeshWithSettings(mesh, settings, &buffer);
+        EncodeScheme(mesh, args.settings, name, &buffer);
     if (!status.ok()) {
-      fprintf(stderr, "Error: -uv_pred '%s': %s\n", name.c_str(),
+      fprintf(stderr, "Error: scheme '%s': %s\n", name.c_str(),
               status.error_msg());
       return false;
     }

@@ -99,7 +99,12 @@ bool ParseArgs(int argc, char **argv, Args *args) {
     } else if (flag == "--seams") {
       args->options.seams = draco::SplitUvToolList(argv[++i]);
     } else if (flag == "--uv_anchors") {
-      args->options.uv_anchors = argv[++i];
+      const auto anchors = draco::ParseUvAnchorSpec(argv[++i]);
+      if (!anchors.ok()) {
+        fprintf(stderr, "Error: %s\n", anchors.status().error_msg());
+        return false;
+      }
+      args->options.uv_anchors = anchors.value();
     } else if (flag == "--csv") {
       args->csv = argv[++i];
     } else if (flag == "--plot") {

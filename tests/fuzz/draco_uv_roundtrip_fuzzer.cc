@@ -37,10 +37,10 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <iterator>
 
-#include "draco_ext/options/uv_laplacian_options.h"
-#include "draco_ext/options/uv_prediction_options.h"
-#include "draco_ext/options/uv_seam_options.h"
+#include "draco_ext/hooks/prediction_scheme_ids.h"
+#include "draco_ext/options/uv_compression_options.h"
 #include "tests/uv_soup_mesh.h"
 
 namespace {
@@ -105,8 +105,8 @@ SoupMesh ConsumeSoup(FuzzedDataProvider *provider) {
   fprintf(stderr,
           "draco_uv_roundtrip_fuzzer: %s (-qp %d -qt %d -cl %d -uv_pred %s "
           "-uv_seams %s): %s\n",
-          what, s.qp, s.qt, s.cl, s.uv_pred.c_str(), s.uv_seams.c_str(),
-          detail.c_str());
+          what, s.qp, s.qt, s.cl, draco::UvPredictionNameOf(s.uv.prediction),
+          draco::UvSeamCodingNameOf(s.uv.seams), detail.c_str());
   abort();
 }
 
@@ -116,25 +116,27 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
   FuzzedDataProvider provider(data, size);
   const auto &names = draco::UvPredictionNames();
   draco::UvEncodeSettings settings;
-  settings.uv_pred =
-      names[provider.ConsumeIntegralInRange<size_t>(0, names.size() - 1)].name;
+  settings.uv.prediction =
+      names[provider.ConsumeIntegralInRange<size_t>(0, names.size() - 1)]
+          .prediction;
   settings.qp = provider.ConsumeIntegralInRange(1, 24);
   settings.qt = provider.ConsumeIntegralInRange(1, 22);
   settings.cl = provider.ConsumeIntegralInRange(0, 10);
-  const auto &seam_codings = draco::UvSeamCodingNames();
-  settings.uv_seams = seam_codings[provider.ConsumeIntegralInRange<size_t>(
-                                       0, seam_codings.size() - 1)]
-                          .name;
+  constexpr draco::UvSeamCoding kSeamCodings[] = {
+      draco::UvSeamCoding::kDraco, draco::UvSeamCoding::kContext};
+  settings.uv.seams = kSeamCodings[provider.ConsumeIntegralInRange<size_t>(
+      0, std::size(kSeamCodings) - 1)];
   const std::unique_ptr<draco::Mesh> mesh =
       draco::BuildSoupMesh(ConsumeSoup(&provider));
   if (mesh == nullptr) {
     return 0;
   }
-  const auto method = draco::ParseUvPredictionName(settings.uv_pred);
+  const draco::PredictionSchemeMethod method =
+      draco::UvPredictionMethod(settings.uv.prediction);
   // Without texture coordinates a draco-uv name changes nothing: the mesh
   // is stock Draco's to encode.
   const bool draco_uv_scheme =
-      method.ok() && draco::IsDracoUvPredictionMethod(method.value()) &&
+      draco::IsDracoUvPredictionMethod(method) &&
       mesh->NumNamedAttributes(draco::GeometryAttribute::TEX_COORD) > 0;
   const bool non_finite =
       draco::HasNonFiniteValue(*mesh, draco::GeometryAttribute::POSITION) ||
@@ -156,8 +158,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
                               message.find("-uv_seams") != std::string::npos;
     if (draco_uv_scheme && !non_finite && !named_reason) {
       draco::UvEncodeSettings stock = settings;
-      stock.uv_pred.clear();
-      stock.uv_seams.clear();
+      stock.uv = draco::UvCompressionOptions();
       draco::EncoderBuffer buffer;
       if (draco::EncodeMeshWithSettings(*mesh, stock, &buffer).ok()) {
         Fail("failed where stock Draco encodes", settings, message);
@@ -173,7 +174,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size) {
          result.decoded.error_msg_string());
   }
   // The Laplacian coders are lossy: their output is not stock Draco's.
-  const bool lossy = method.ok() && draco::IsLossyUvPrediction(method.value());
+  const bool lossy = draco::IsLossyUvPrediction(method);
   if (result.stock_encoded && !result.identical && !lossy) {
     Fail("decoded values differ from stock Draco's", settings, "");
   }

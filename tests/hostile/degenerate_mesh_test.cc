@@ -60,7 +60,7 @@ std::vector<UvEncodeSettings> SettingsGrid() {
     for (const int cl : {1, 5, 10}) {
       for (const int qp : {3, 14}) {
         for (const int qt : {2, 12, 20}) {
-          grid.push_back({qp, qt, cl, scheme});
+          grid.push_back(Settings(qp, qt, cl, scheme));
         }
       }
     }
@@ -70,7 +70,8 @@ std::vector<UvEncodeSettings> SettingsGrid() {
 
 std::string Label(const UvEncodeSettings &s) {
   return "-qp " + std::to_string(s.qp) + " -qt " + std::to_string(s.qt) +
-         " -cl " + std::to_string(s.cl) + " -uv_pred " + s.uv_pred;
+         " -cl " + std::to_string(s.cl) + " -uv_pred " +
+         UvPredictionNameOf(s.uv.prediction);
 }
 
 // Every setting encodes |mesh| and decodes it to stock Draco's values.
@@ -89,7 +90,7 @@ void ExpectExactRoundTrips(const Mesh &mesh, const std::string &name) {
 void ExpectClearRefusal(const Mesh &mesh, const std::string &reason,
                         const std::string &name) {
   for (const char *scheme : {"weighted", "weighted_multi"}) {
-    const UvEncodeSettings settings{14, 12, 10, scheme};
+    const UvEncodeSettings settings = Settings(14, 12, 10, scheme);
     EncoderBuffer buffer;
     const Status status = EncodeMeshWithSettings(mesh, settings, &buffer);
     EXPECT_FALSE(status.ok()) << name << " " << scheme;
@@ -130,7 +131,7 @@ TEST(DegenerateMeshTest, FacesCollapsedOntoOnePositionRoundTripExactly) {
     const auto built = BuildSoupMesh(soup);
     for (const char *scheme : kSchemes) {
       for (int cl = 1; cl <= 10; ++cl) {
-        const UvEncodeSettings settings{11, 12, cl, scheme};
+        const UvEncodeSettings settings = Settings(11, 12, cl, scheme);
         const UvRoundTrip result = RoundTripAgainstStock(*built, settings);
         ASSERT_TRUE(result.encoded.ok() && result.decoded.ok())
             << "mesh " << mesh << " " << Label(settings) << ": "
@@ -242,10 +243,10 @@ TEST(DegenerateMeshTest, MeshWithoutTextureCoordinatesEncodesAsStock) {
   soup.uvs.clear();
   const auto mesh = BuildSoupMesh(soup);
   for (const char *scheme : kSchemes) {
-    const UvEncodeSettings settings{14, 12, 10, scheme};
+    const UvEncodeSettings settings = Settings(14, 12, 10, scheme);
     EncoderBuffer ours, stock;
     ASSERT_TRUE(EncodeMeshWithSettings(*mesh, settings, &ours).ok());
-    ASSERT_TRUE(EncodeMeshWithSettings(*mesh, {14, 12, 10, ""}, &stock).ok());
+    ASSERT_TRUE(EncodeMeshWithSettings(*mesh, {14, 12, 10}, &stock).ok());
     EXPECT_EQ(std::string(ours.data(), ours.size()),
               std::string(stock.data(), stock.size()))
         << scheme;
@@ -273,9 +274,8 @@ TEST(DegenerateMeshTest, AwkwardCorpusMeshesRoundTripExactly) {
     ASSERT_TRUE(mesh.ok()) << path;
     for (const char *scheme : {"weighted", "weighted_multi"}) {
       for (const UvEncodeSettings settings :
-           {UvEncodeSettings{6, 4, 10, scheme},
-            {8, 20, 5, scheme},
-            {14, 16, 1, scheme}}) {
+           {Settings(6, 4, 10, scheme), Settings(8, 20, 5, scheme),
+            Settings(14, 16, 1, scheme)}) {
         const UvRoundTrip result =
             RoundTripAgainstStock(*mesh.value(), settings);
         ASSERT_TRUE(result.encoded.ok() && result.decoded.ok())

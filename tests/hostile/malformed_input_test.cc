@@ -316,7 +316,7 @@ std::vector<char> TexCoordsPredictionData(int32_t num_orientations,
 }
 
 TEST(MalformedInputTest, OrientationCountsAboveTheCornersAreRejected) {
-  // Patch 0019: stock Draco 1.5.5 decoded as many orientation bits as the
+  // Patch 0012: stock Draco 1.5.5 decoded as many orientation bits as the
   // count said (fuzzed 4.5 KB files took 12-22 s and 256 MB), and extra
   // ones were read as if they belonged to the UVs.
   IndexTypeVector<FaceIndex, CornerTable::FaceType> faces(1);

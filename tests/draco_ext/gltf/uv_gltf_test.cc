@@ -27,6 +27,7 @@
 #include "draco/io/scene_io.h"
 #include "draco/mesh/mesh_utils.h"
 #include "draco_ext/eval/uv_gltf_eval.h"
+#include "draco_ext/options/uv_configure.h"
 #include "gtest/gtest.h"
 #include "tests/draco_uv_test_utils.h"
 
@@ -60,9 +61,9 @@ class UvGltfEncoderTest : public ::testing::Test {
     ASSERT_GT(mesh_->NumNamedAttributes(GeometryAttribute::TEX_COORD), 0);
   }
 
-  std::unique_ptr<ExpertEncoder> MakeEncoder(const std::string &prediction) {
+  std::unique_ptr<ExpertEncoder> MakeEncoder(const UvCompressionOptions &uv) {
     DracoCompressionOptions options;
-    options.uv.prediction = prediction;
+    options.uv = uv;
     mesh_->SetCompressionOptions(options);
     std::unique_ptr<ExpertEncoder> encoder(new ExpertEncoder(*mesh_));
     encoder->SetSpeedOptions(3, 3);
@@ -83,8 +84,10 @@ class UvGltfEncoderTest : public ::testing::Test {
 };
 
 TEST_F(UvGltfEncoderTest, StockOptionsChangeNeitherBitstreamNorExtensions) {
-  const std::unique_ptr<ExpertEncoder> untouched = MakeEncoder("");
-  const std::unique_ptr<ExpertEncoder> configured = MakeEncoder("");
+  const std::unique_ptr<ExpertEncoder> untouched =
+      MakeEncoder(UvCompressionOptions());
+  const std::unique_ptr<ExpertEncoder> configured =
+      MakeEncoder(UvCompressionOptions());
   ASSERT_TRUE(
       ConfigureUvCompressionForGltf(*mesh_, configured, &used_, &required_)
           .ok());
@@ -96,10 +99,8 @@ TEST_F(UvGltfEncoderTest, StockOptionsChangeNeitherBitstreamNorExtensions) {
 TEST_F(UvGltfEncoderTest, AnchorsReachTheLaplacianCoder) {
   std::vector<std::vector<char>> streams;
   for (const std::string anchors : {"", "50", "0"}) {
-    const std::unique_ptr<ExpertEncoder> encoder = MakeEncoder("laplacian_mv");
-    DracoCompressionOptions options = mesh_->GetCompressionOptions();
-    options.uv.anchors = anchors;
-    mesh_->SetCompressionOptions(options);
+    const std::unique_ptr<ExpertEncoder> encoder =
+        MakeEncoder(UvOptions("laplacian_mv", anchors));
     ASSERT_TRUE(
         ConfigureUvCompressionForGltf(*mesh_, *encoder, &used_, &required_)
             .ok())
@@ -111,19 +112,74 @@ TEST_F(UvGltfEncoderTest, AnchorsReachTheLaplacianCoder) {
 }
 
 // Like a primitive of a multi-primitive asset that has no texture
-// coordinates: it ignores -uv_anchors instead of failing the transcode.
-TEST_F(UvGltfEncoderTest, AnchorsIgnorePrimitivesWithoutTexCoords) {
+// coordinates: -uv_anchors is checked on the options, as on the command
+// line, so such a primitive neither fails valid options nor lets invalid
+// ones through.
+TEST_F(UvGltfEncoderTest, AnchorsAreCheckedOnTheOptionsNotThePrimitive) {
   while (mesh_->NumNamedAttributes(GeometryAttribute::TEX_COORD) > 0) {
     mesh_->DeleteAttribute(
         mesh_->GetNamedAttributeId(GeometryAttribute::TEX_COORD, 0));
   }
-  const std::unique_ptr<ExpertEncoder> encoder = MakeEncoder("laplacian_mv");
-  DracoCompressionOptions options = mesh_->GetCompressionOptions();
-  options.uv.anchors = "2%";
-  mesh_->SetCompressionOptions(options);
-  EXPECT_TRUE(
-      ConfigureUvCompressionForGltf(*mesh_, *encoder, &used_, &required_)
+  const std::unique_ptr<ExpertEncoder> laplacian =
+      MakeEncoder(UvOptions("laplacian_mv", "2%"));
+  EXPECT_EQ(
+      ConfigureUvCompressionForGltf(*mesh_, *laplacian, &used_, &required_)
+          .ok(),
+      HasUvLaplacianCoder());
+  const std::unique_ptr<ExpertEncoder> weighted =
+      MakeEncoder(UvOptions("weighted", "2%"));
+  EXPECT_FALSE(
+      ConfigureUvCompressionForGltf(*mesh_, *weighted, &used_, &required_)
           .ok());
+}
+
+// The glTF hook, draco_transcoder's path (TranscodeGltfFile()) and
+// ConfigureUvCompression() accept and reject the same options: every entry
+// point checks them with the same strictness.
+TEST_F(UvGltfEncoderTest, EntryPointsRejectTheSameAnchorOptions) {
+  struct Case {
+    std::string scheme;
+    std::string anchors;
+    bool valid;
+  };
+  const bool laplacian = HasUvLaplacianCoder();
+  const std::string input = DracoTestdataPath("sphere.gltf");
+  for (const Case &c : std::vector<Case>{{"draco", "10", false},
+                                         {"draco+context", "10", false},
+                                         {"weighted", "2%", false},
+                                         {"auto", "random:5", false},
+                                         {"parallelogram", "0", false},
+                                         {"laplacian_mv", "10", laplacian},
+                                         {"laplacian_tutte", "random:2%",
+                                          laplacian},
+                                         {"laplacian_cotan", "", laplacian},
+                                         {"weighted", "", true}}) {
+    const std::string label = c.scheme + " -uv_anchors '" + c.anchors + "'";
+    const UvCompressionOptions uv = UvOptions(c.scheme, c.anchors);
+    EXPECT_EQ(CheckUvCompressionOptions(uv).ok(), c.valid) << label;
+
+    const std::unique_ptr<ExpertEncoder> direct =
+        MakeEncoder(UvCompressionOptions());
+    EXPECT_EQ(ConfigureUvCompression(uv, mesh_.get(), direct.get()).ok(),
+              c.valid)
+        << label;
+
+    const std::unique_ptr<ExpertEncoder> hooked = MakeEncoder(uv);
+    EXPECT_EQ(
+        ConfigureUvCompressionForGltf(*mesh_, *hooked, &used_, &required_)
+            .ok(),
+        c.valid)
+        << label;
+
+    DracoCompressionOptions options;
+    options.uv = uv;
+    EXPECT_EQ(options.Check().ok(), c.valid) << label;
+    EXPECT_EQ(
+        TranscodeGltfFile(input, UvTempPath("anchors_sphere.gltf"), options)
+            .ok(),
+        c.valid)
+        << label;
+  }
 }
 
 TEST_F(UvGltfEncoderTest, ExtensionIsRequiredExactlyForDracoUvSchemes) {
@@ -131,7 +187,8 @@ TEST_F(UvGltfEncoderTest, ExtensionIsRequiredExactlyForDracoUvSchemes) {
        {"draco", "parallelogram", "portable", "weighted"}) {
     used_.clear();
     required_.clear();
-    const std::unique_ptr<ExpertEncoder> encoder = MakeEncoder(name);
+    const std::unique_ptr<ExpertEncoder> encoder =
+        MakeEncoder(UvOptions(name));
     ASSERT_TRUE(
         ConfigureUvCompressionForGltf(*mesh_, *encoder, &used_, &required_)
             .ok())
@@ -256,7 +313,7 @@ std::string ReadText(const std::string &path) {
 // The reader hook accepts draco-uv's extension, not every unknown one.
 TEST(UvGltfTranscodeTest, ReaderStillRejectsOtherUnknownRequiredExtensions) {
   DracoCompressionOptions options;
-  options.uv.prediction = "weighted";
+  options.uv.prediction = UvPrediction::kWeighted;
   const std::string output = UvTempPath("weighted_sphere.gltf");
   ASSERT_TRUE(
       TranscodeGltfFile(DracoTestdataPath("sphere.gltf"), output, options)
@@ -297,8 +354,9 @@ TEST(UvGltfOrientationTest, WeightedCostIsInsensitiveToTheVFlip) {
               flipped.GetNamedAttributeId(GeometryAttribute::TEX_COORD, i))));
     }
     const auto original =
-        EncodeMeshToBytes(*mesh.value(), {14, 12, 10, "weighted"});
-    const auto mirrored = EncodeMeshToBytes(flipped, {14, 12, 10, "weighted"});
+        EncodeMeshToBytes(*mesh.value(), Settings(14, 12, 10, "weighted"));
+    const auto mirrored =
+        EncodeMeshToBytes(flipped, Settings(14, 12, 10, "weighted"));
     ASSERT_TRUE(original.ok() && mirrored.ok()) << name;
     const double a = original.value().size(), b = mirrored.value().size();
     EXPECT_LE(std::abs(a - b), std::max(32.0, 0.01 * a)) << name;

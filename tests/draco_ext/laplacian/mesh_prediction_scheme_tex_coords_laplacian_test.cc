@@ -76,7 +76,8 @@ TEST(UvLaplacianSchemeTest, RmseFallsWithQtForEveryLaplacian) {
     for (const char *scheme : kSchemes) {
       double previous = std::numeric_limits<double>::max();
       for (const int qt : {7, 10, 13}) {
-        const auto bytes = EncodeMeshToBytes(*mesh.value(), {14, qt, 10, scheme, ""});
+        const auto bytes =
+            EncodeMeshToBytes(*mesh.value(), Settings(14, qt, 10, scheme));
         ASSERT_TRUE(bytes.ok()) << path << " " << scheme << ": "
                                 << bytes.status().error_msg_string();
         const auto decoded = DecodeDracoMesh(bytes.value());
@@ -97,7 +98,7 @@ TEST(UvLaplacianSchemeTest, DecodingIsDeterministic) {
   auto mesh = ReadTestMesh(UvTestdataPath("torus_uv.obj"));
   ASSERT_TRUE(mesh.ok());
   const auto bytes =
-      EncodeMeshToBytes(*mesh.value(), {14, 10, 10, "laplacian_mv", "", ""});
+      EncodeMeshToBytes(*mesh.value(), Settings(14, 10, 10, "laplacian_mv"));
   ASSERT_TRUE(bytes.ok());
   const auto a = DecodeDracoMesh(bytes.value());
   const auto b = DecodeDracoMesh(bytes.value());
@@ -105,7 +106,7 @@ TEST(UvLaplacianSchemeTest, DecodingIsDeterministic) {
   EXPECT_EQ(CornerValues(*a.value(), GeometryAttribute::TEX_COORD),
             CornerValues(*b.value(), GeometryAttribute::TEX_COORD));
   const auto again =
-      EncodeMeshToBytes(*mesh.value(), {14, 10, 10, "laplacian_mv", "", ""});
+      EncodeMeshToBytes(*mesh.value(), Settings(14, 10, 10, "laplacian_mv"));
   ASSERT_TRUE(again.ok());
   EXPECT_EQ(bytes.value(), again.value());
 }
@@ -116,7 +117,7 @@ TEST(UvLaplacianSchemeTest, AnchorOptionChangesTheStream) {
   std::map<std::string, size_t> sizes;
   for (const std::string anchors : {"", "50", "0", "random:50"}) {
     const auto bytes = EncodeMeshToBytes(
-        *mesh.value(), {14, 10, 10, "laplacian_cotan", "", anchors});
+        *mesh.value(), Settings(14, 10, 10, "laplacian_cotan", anchors));
     ASSERT_TRUE(bytes.ok()) << anchors;
     ASSERT_TRUE(DecodeDracoMesh(bytes.value()).ok()) << anchors;
     sizes[anchors] = bytes.value().size();
@@ -130,7 +131,7 @@ TEST(UvLaplacianSchemeTest, AutoNeverPicksALossyScheme) {
   ASSERT_TRUE(mesh.ok());
   std::string summary;
   EncoderBuffer buffer;
-  ASSERT_TRUE(EncodeMeshWithSettings(*mesh.value(), {14, 6, 10, "auto", "", ""},
+  ASSERT_TRUE(EncodeMeshWithSettings(*mesh.value(), Settings(14, 6, 10, "auto"),
                                      &buffer, &summary)
                   .ok());
   EXPECT_EQ(summary.find("laplacian"), std::string::npos) << summary;
@@ -140,7 +141,7 @@ TEST(UvLaplacianSchemeTest, TruncatedFilesFailToDecode) {
   auto mesh = ReadTestMesh(UvTestdataPath("torus_uv.obj"));
   ASSERT_TRUE(mesh.ok());
   const auto bytes =
-      EncodeMeshToBytes(*mesh.value(), {14, 10, 10, "laplacian_tutte", "", ""});
+      EncodeMeshToBytes(*mesh.value(), Settings(14, 10, 10, "laplacian_tutte"));
   ASSERT_TRUE(bytes.ok());
   for (size_t size = 0; size < bytes.value().size(); size += 7) {
     const std::vector<char> truncated(bytes.value().begin(),
@@ -153,7 +154,7 @@ TEST(UvLaplacianSchemeTest, RejectsOtherFormatVersions) {
   auto mesh = ReadTestMesh(UvTestdataPath("torus_uv.obj"));
   ASSERT_TRUE(mesh.ok());
   const auto bytes =
-      EncodeMeshToBytes(*mesh.value(), {14, 10, 10, "laplacian_mv", "", ""});
+      EncodeMeshToBytes(*mesh.value(), Settings(14, 10, 10, "laplacian_mv"));
   ASSERT_TRUE(bytes.ok());
   ASSERT_TRUE(DecodeDracoMesh(bytes.value()).ok());
   // The scheme's data start with the 8-byte guard, then the version.
@@ -179,7 +180,7 @@ TEST(UvLaplacianSchemeTest, CorruptFilesFailOrDecodeFiniteUvs) {
   auto mesh = ReadTestMesh(UvTestdataPath("torus_uv.obj"));
   ASSERT_TRUE(mesh.ok());
   const auto bytes =
-      EncodeMeshToBytes(*mesh.value(), {14, 10, 10, "laplacian_cotan", "", ""});
+      EncodeMeshToBytes(*mesh.value(), Settings(14, 10, 10, "laplacian_cotan"));
   ASSERT_TRUE(bytes.ok());
   std::mt19937 random(11);
   int rejected = 0;

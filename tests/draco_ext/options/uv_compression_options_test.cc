@@ -14,64 +14,250 @@
 //
 #include "draco_ext/options/uv_compression_options.h"
 
+#include <algorithm>
 #include <string>
 #include <vector>
 
 #include "draco/compression/draco_compression_options.h"
-#include "draco_ext/options/uv_prediction_options.h"
-#include "draco_ext/options/uv_seam_options.h"
+#include "draco_ext/hooks/prediction_scheme_ids.h"
+#include "draco_ext/laplacian/uv_laplacian_settings.h"
 #include "gtest/gtest.h"
 
 namespace draco {
 namespace {
 
-DracoCompressionOptions WithPrediction(const std::string &name) {
+DracoCompressionOptions WithPrediction(UvPrediction prediction) {
   DracoCompressionOptions options;
-  options.uv.prediction = name;
+  options.uv.prediction = prediction;
   return options;
+}
+
+UvAnchorSpec Anchors(const std::string &spec) {
+  const StatusOr<UvAnchorSpec> parsed = ParseUvAnchorSpec(spec);
+  EXPECT_TRUE(parsed.ok()) << spec;
+  return parsed.ok() ? parsed.value() : UvAnchorSpec();
 }
 
 TEST(UvCompressionOptionsTest, DefaultIsStockAndPassesDracosCheck) {
   const DracoCompressionOptions options;
   EXPECT_TRUE(options.uv.IsStock());
-  EXPECT_TRUE(WithPrediction("draco").uv.IsStock());
+  EXPECT_EQ(options.uv.prediction, UvPrediction::kDraco);
+  EXPECT_EQ(options.uv.seams, UvSeamCoding::kDraco);
+  EXPECT_FALSE(options.uv.anchors.has_value());
   EXPECT_TRUE(options.Check().ok());
-  EXPECT_EQ(options, WithPrediction(""));
+  EXPECT_EQ(options, WithPrediction(UvPrediction::kDraco));
 }
 
 TEST(UvCompressionOptionsTest, TakesPartInDracoOptionsEquality) {
-  EXPECT_NE(DracoCompressionOptions(), WithPrediction("weighted"));
-  EXPECT_EQ(WithPrediction("auto"), WithPrediction("auto"));
+  EXPECT_NE(DracoCompressionOptions(), WithPrediction(UvPrediction::kWeighted));
+  EXPECT_EQ(WithPrediction(UvPrediction::kAuto),
+            WithPrediction(UvPrediction::kAuto));
+  DracoCompressionOptions with_anchors =
+      WithPrediction(UvPrediction::kLaplacianMeanValue);
+  with_anchors.uv.anchors = Anchors("10");
+  EXPECT_NE(with_anchors, WithPrediction(UvPrediction::kLaplacianMeanValue));
+  DracoCompressionOptions other_anchors = with_anchors;
+  other_anchors.uv.anchors = Anchors("random:10");
+  EXPECT_NE(with_anchors, other_anchors);
+  other_anchors.uv.anchors = Anchors("10");
+  EXPECT_EQ(with_anchors, other_anchors);
 }
 
 TEST(UvCompressionOptionsTest, EveryNamePassesTheCheckAtTranscoderDefaults) {
   for (const UvPredictionName &entry : UvPredictionNames()) {
-    EXPECT_TRUE(WithPrediction(entry.name).Check().ok()) << entry.name;
+    EXPECT_EQ(WithPrediction(entry.prediction).Check().ok(),
+              !IsUvLaplacian(entry.prediction) || HasUvLaplacianCoder())
+        << entry.name;
   }
 }
 
-TEST(UvCompressionOptionsTest, CheckRejectsUnknownName) {
-  const Status status = WithPrediction("weigthed").Check();
-  ASSERT_FALSE(status.ok());
-  EXPECT_NE(status.error_msg_string().find("weigthed"), std::string::npos);
+// The name table is the only one: every -uv_pred name parses to its entry's
+// prediction, which maps to its entry's Draco scheme and back to the name.
+TEST(UvCompressionOptionsTest, ParsesEveryPredictionNameToItsScheme) {
+  std::vector<UvPrediction> seen;
+  for (const UvPredictionName &entry : UvPredictionNames()) {
+    const StatusOr<UvPrediction> prediction = ParseUvPredictionName(entry.name);
+    ASSERT_TRUE(prediction.ok()) << entry.name;
+    EXPECT_EQ(prediction.value(), entry.prediction) << entry.name;
+    EXPECT_EQ(UvPredictionMethod(entry.prediction), entry.method) << entry.name;
+    EXPECT_STREQ(UvPredictionNameOf(entry.prediction), entry.name);
+    EXPECT_EQ(std::count(seen.begin(), seen.end(), entry.prediction), 0)
+        << entry.name;
+    seen.push_back(entry.prediction);
+  }
+  EXPECT_EQ(seen.size(), static_cast<size_t>(UvPrediction::kAuto) + 1);
+  EXPECT_EQ(ParseUvPredictionName("draco").value(), UvPrediction::kDraco);
+  EXPECT_EQ(ParseUvPredictionName("weighted").value(), UvPrediction::kWeighted);
+  EXPECT_EQ(ParseUvPredictionName("laplacian_mv").value(),
+            UvPrediction::kLaplacianMeanValue);
+  EXPECT_EQ(ParseUvPredictionName("auto").value(), UvPrediction::kAuto);
+  EXPECT_EQ(UvPredictionMethod(UvPrediction::kDraco), PREDICTION_UNDEFINED);
+  EXPECT_EQ(UvPredictionMethod(UvPrediction::kAuto), PREDICTION_UNDEFINED);
+  EXPECT_EQ(UvPredictionMethod(UvPrediction::kWeighted),
+            MESH_PREDICTION_TEX_COORDS_WEIGHTED);
+  EXPECT_EQ(UvPredictionMethod(UvPrediction::kPortable),
+            MESH_PREDICTION_TEX_COORDS_PORTABLE);
+  EXPECT_EQ(UvPredictionMethod(UvPrediction::kLaplacianCotan),
+            MESH_PREDICTION_TEX_COORDS_LAPLACIAN);
+}
+
+TEST(UvCompressionOptionsTest, NamesDracoSchemesForTheTools) {
+  EXPECT_EQ(UvPredictionNameOf(PREDICTION_UNDEFINED), "draco");
+  EXPECT_EQ(UvPredictionNameOf(MESH_PREDICTION_PARALLELOGRAM), "parallelogram");
+  EXPECT_EQ(UvPredictionNameOf(MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI),
+            "weighted_multi");
+  // An id without a name of its own reads as its number.
+  EXPECT_EQ(UvPredictionNameOf(MESH_PREDICTION_GEOMETRIC_NORMAL),
+            std::to_string(static_cast<int>(MESH_PREDICTION_GEOMETRIC_NORMAL)));
+}
+
+// Draco's patched gate (hooks/prediction_scheme_ids.h) knows draco-uv's
+// schemes by id: exactly the names marked draco-uv's.
+TEST(UvCompressionOptionsTest, DracoUvNamesSetDracoUvSchemeIds) {
+  for (const UvPredictionName &entry : UvPredictionNames()) {
+    const bool draco_uv = entry.prediction == UvPrediction::kWeighted ||
+                          entry.prediction == UvPrediction::kWeightedMulti ||
+                          IsUvLaplacian(entry.prediction);
+    EXPECT_EQ(IsDracoUvPredictionMethod(entry.method), draco_uv) << entry.name;
+  }
+  EXPECT_FALSE(IsDracoUvPredictionMethod(PREDICTION_UNDEFINED));
+  EXPECT_FALSE(IsDracoUvPredictionMethod(MESH_PREDICTION_GEOMETRIC_NORMAL));
+  EXPECT_FALSE(IsDracoUvPredictionMethod(NUM_PREDICTION_SCHEMES));
+}
+
+TEST(UvCompressionOptionsTest, OnlyTheLaplacianPredictionsAreLossy) {
+  for (const UvPredictionName &entry : UvPredictionNames()) {
+    const bool laplacian = entry.prediction == UvPrediction::kLaplacianTutte ||
+                           entry.prediction == UvPrediction::kLaplacianCotan ||
+                           entry.prediction == UvPrediction::kLaplacianMeanValue;
+    EXPECT_EQ(IsUvLaplacian(entry.prediction), laplacian) << entry.name;
+    EXPECT_EQ(IsLossyUvPrediction(entry.method), laplacian) << entry.name;
+  }
+  EXPECT_FALSE(IsLossyUvPrediction(MESH_PREDICTION_TEX_COORDS_WEIGHTED));
+  EXPECT_TRUE(IsLossyUvPrediction(MESH_PREDICTION_TEX_COORDS_LAPLACIAN));
+}
+
+TEST(UvCompressionOptionsTest, RejectsUnknownNamesListingValidNames) {
+  const StatusOr<UvPrediction> prediction = ParseUvPredictionName("weigthed");
+  ASSERT_FALSE(prediction.ok());
+  const std::string message = prediction.status().error_msg_string();
+  EXPECT_NE(message.find("Unknown -uv_pred name 'weigthed'. Valid names: "),
+            std::string::npos)
+      << message;
+  for (const UvPredictionName &entry : UvPredictionNames()) {
+    EXPECT_NE(message.find(entry.name), std::string::npos) << message;
+  }
+  EXPECT_FALSE(ParseUvPredictionName("").ok());
+
+  const StatusOr<UvSeamCoding> coding = ParseUvSeamCodingName("contex");
+  ASSERT_FALSE(coding.ok());
+  EXPECT_EQ(coding.status().error_msg_string(),
+            "Unknown -uv_seams name 'contex'. Valid names: draco, context.");
+}
+
+TEST(UvCompressionOptionsTest, ParsesEverySeamCodingName) {
+  for (const UvSeamCoding coding :
+       {UvSeamCoding::kDraco, UvSeamCoding::kContext}) {
+    const StatusOr<UvSeamCoding> parsed =
+        ParseUvSeamCodingName(UvSeamCodingNameOf(coding));
+    ASSERT_TRUE(parsed.ok()) << UvSeamCodingNameOf(coding);
+    EXPECT_EQ(parsed.value(), coding);
+  }
+  EXPECT_STREQ(UvSeamCodingNameOf(UvSeamCoding::kDraco), "draco");
+  EXPECT_EQ(ParseUvSeamCodingName("context").value(), UvSeamCoding::kContext);
+}
+
+TEST(UvCompressionOptionsTest, ParsesAnchorSpecs) {
+  UvAnchorSpec count;
+  count.count = 100;
+  EXPECT_EQ(Anchors("100"), count);
+  UvAnchorSpec random_count = count;
+  random_count.random = true;
+  EXPECT_EQ(Anchors("random:100"), random_count);
+  UvAnchorSpec percent;
+  percent.is_percent = true;
+  percent.percent = 2.5;
+  EXPECT_EQ(Anchors("2.5%"), percent);
+  UvAnchorSpec random_percent = percent;
+  random_percent.random = true;
+  EXPECT_EQ(Anchors("random:2.5%"), random_percent);
+  EXPECT_EQ(Anchors("0").count, 0);
+  EXPECT_EQ(Anchors(std::to_string(kUvLaplacianMaxExtraAnchors)).count,
+            kUvLaplacianMaxExtraAnchors);
+  EXPECT_EQ(Anchors("100%").percent, 100.0);
+  for (const std::string &bad : std::vector<std::string>{
+           "", "-3", "random:", "many", "1e3", "%", "101%", "-1%", "2.5.1%",
+           "random:x%", "random:-1",
+           std::to_string(kUvLaplacianMaxExtraAnchors + 1)}) {
+    const StatusOr<UvAnchorSpec> parsed = ParseUvAnchorSpec(bad);
+    ASSERT_FALSE(parsed.ok()) << bad;
+    EXPECT_NE(parsed.status().error_msg_string().find("-uv_anchors"),
+              std::string::npos);
+  }
+}
+
+TEST(UvCompressionOptionsTest, CheckNeedsALaplacianPredictionForAnchors) {
+  UvCompressionOptions options;
+  EXPECT_TRUE(CheckUvCompressionOptions(options).ok());
+  options.anchors = Anchors("10");
+  for (const UvPredictionName &entry : UvPredictionNames()) {
+    options.prediction = entry.prediction;
+    for (const UvSeamCoding seams :
+         {UvSeamCoding::kDraco, UvSeamCoding::kContext}) {
+      options.seams = seams;
+      const Status status = CheckUvCompressionOptions(options);
+      EXPECT_EQ(status.ok(), IsUvLaplacian(entry.prediction)) << entry.name;
+      if (!status.ok()) {
+        EXPECT_NE(status.error_msg_string().find("-uv_anchors"),
+                  std::string::npos);
+      }
+    }
+  }
+  // Unset anchors are fine with any prediction.
+  options.anchors.reset();
+  for (const UvPredictionName &entry : UvPredictionNames()) {
+    options.prediction = entry.prediction;
+    EXPECT_EQ(CheckUvCompressionOptions(options).ok(),
+              !IsUvLaplacian(entry.prediction) || HasUvLaplacianCoder())
+        << entry.name;
+  }
+}
+
+// A Laplacian name is an error in a build without the Laplacian coder.
+TEST(UvCompressionOptionsTest, CheckNeedsTheLaplacianCoderInTheBuild) {
+#ifdef DRACO_UV_LAPLACIAN
+  EXPECT_TRUE(HasUvLaplacianCoder());
+#else
+  EXPECT_FALSE(HasUvLaplacianCoder());
+#endif
+  UvCompressionOptions options;
+  options.prediction = UvPrediction::kLaplacianCotan;
+  const Status status = CheckUvCompressionOptions(options);
+  EXPECT_EQ(status.ok(), HasUvLaplacianCoder());
+  if (!status.ok()) {
+    EXPECT_NE(status.error_msg_string().find("laplacian_cotan"),
+              std::string::npos);
+  }
 }
 
 TEST(UvCompressionOptionsTest, CheckRejectsSettingsTheCodersCannotUse) {
-  DracoCompressionOptions sequential = WithPrediction("weighted");
+  DracoCompressionOptions sequential = WithPrediction(UvPrediction::kWeighted);
   sequential.compression_level = 0;
   EXPECT_FALSE(sequential.Check().ok());
 
-  DracoCompressionOptions unquantized_uvs = WithPrediction("parallelogram");
+  DracoCompressionOptions unquantized_uvs =
+      WithPrediction(UvPrediction::kParallelogram);
   unquantized_uvs.quantization_bits_tex_coord = 0;
   EXPECT_FALSE(unquantized_uvs.Check().ok());
 
-  DracoCompressionOptions unquantized_positions = WithPrediction("weighted");
+  DracoCompressionOptions unquantized_positions =
+      WithPrediction(UvPrediction::kWeighted);
   unquantized_positions.quantization_position.SetQuantizationBits(0);
   EXPECT_FALSE(unquantized_positions.Check().ok());
   // Auto skips the candidates that need quantized positions.
-  unquantized_positions.uv.prediction = "auto";
+  unquantized_positions.uv.prediction = UvPrediction::kAuto;
   EXPECT_TRUE(unquantized_positions.Check().ok());
-  unquantized_positions.uv.prediction = "parallelogram";
+  unquantized_positions.uv.prediction = UvPrediction::kParallelogram;
   EXPECT_TRUE(unquantized_positions.Check().ok());
 
   // Stock options stay valid whatever the rest says.
@@ -97,7 +283,9 @@ TEST(UvCompressionFlagTest, ParsesUvPredAndStopsOnItsValue) {
   UvCompressionOptions options;
   int index = 1;
   ASSERT_TRUE(Parse({"tool", "-uv_pred", "auto", "-o"}, &options, &index).ok());
-  EXPECT_EQ(options.prediction, "auto");
+  EXPECT_EQ(options.prediction, UvPrediction::kAuto);
+  EXPECT_EQ(options.seams, UvSeamCoding::kDraco);
+  EXPECT_FALSE(options.anchors.has_value());
   EXPECT_EQ(index, 2);
 }
 
@@ -106,16 +294,27 @@ TEST(UvCompressionFlagTest, RejectsMissingOrUnknownValue) {
   int index = 1;
   EXPECT_FALSE(Parse({"tool", "-uv_pred"}, &options, &index).ok());
   index = 1;
-  EXPECT_FALSE(Parse({"tool", "-uv_pred", "fast"}, &options, &index).ok());
+  const Status unknown = Parse({"tool", "-uv_pred", "fast"}, &options, &index);
+  ASSERT_FALSE(unknown.ok());
+  EXPECT_NE(unknown.error_msg_string().find(
+                "Unknown -uv_pred name 'fast'. Valid names: draco, "),
+            std::string::npos)
+      << unknown.error_msg_string();
   EXPECT_TRUE(options.IsStock());
+  EXPECT_EQ(options, UvCompressionOptions());
 }
 
 TEST(UvCompressionFlagTest, UsageListsEveryName) {
   for (const UvPredictionName &entry : UvPredictionNames()) {
     EXPECT_NE(UvCompressionUsage().find(entry.name), std::string::npos);
   }
-  for (const UvSeamCodingName &entry : UvSeamCodingNames()) {
-    EXPECT_NE(UvCompressionUsage().find(entry.name), std::string::npos);
+  for (const UvSeamCoding coding :
+       {UvSeamCoding::kDraco, UvSeamCoding::kContext}) {
+    EXPECT_NE(UvCompressionUsage().find(UvSeamCodingNameOf(coding)),
+              std::string::npos);
+  }
+  for (const char *flag : {"-uv_pred", "-uv_seams", "-uv_anchors"}) {
+    EXPECT_NE(UvCompressionUsage().find(flag), std::string::npos) << flag;
   }
 }
 
@@ -131,8 +330,8 @@ TEST(UvCompressionFlagTest, ParsesUvSeamsNextToUvPred) {
   ASSERT_TRUE(Parse({"tool", "-uv_seams", "context", "-uv_pred", "weighted"},
                     &options, &index)
                   .ok());
-  EXPECT_EQ(options.seams, "context");
-  EXPECT_EQ(options.prediction, "weighted");
+  EXPECT_EQ(options.seams, UvSeamCoding::kContext);
+  EXPECT_EQ(options.prediction, UvPrediction::kWeighted);
   EXPECT_FALSE(options.IsStock());
   index = 1;
   EXPECT_FALSE(Parse({"tool", "-uv_seams", "static"}, &options, &index).ok());
@@ -143,38 +342,51 @@ TEST(UvCompressionFlagTest, ParsesUvAnchorsForTheLaplacianCoder) {
   UvCompressionOptions options;
   int index = 1;
   ASSERT_TRUE(Parse({"tool", "-uv_anchors", "2%"}, &options, &index).ok());
-  EXPECT_EQ(options.anchors, "2%");
+  ASSERT_TRUE(options.anchors.has_value());
+  EXPECT_EQ(*options.anchors, Anchors("2%"));
+  EXPECT_TRUE(options.anchors->is_percent);
+  EXPECT_EQ(options.anchors->percent, 2.0);
   EXPECT_EQ(index, 2);
+  // The flag parser only parses: the pairing with a Laplacian -uv_pred is
+  // CheckUvCompressionOptions()'s.
+  EXPECT_FALSE(CheckUvCompressionOptions(options).ok());
+  index = 1;
+  ASSERT_TRUE(
+      Parse({"tool", "-uv_pred", "laplacian_cotan"}, &options, &index).ok());
+  EXPECT_EQ(options.prediction, UvPrediction::kLaplacianCotan);
+  EXPECT_TRUE(CheckUvCompressionOptions(options).ok());
   index = 1;
   EXPECT_FALSE(Parse({"tool", "-uv_anchors", "many"}, &options, &index).ok());
   EXPECT_NE(UvCompressionUsage().find("-uv_anchors"), std::string::npos);
 }
 
 TEST(UvCompressionOptionsTest, CheckAnchorsNeedALaplacianScheme) {
-  DracoCompressionOptions options = WithPrediction("laplacian_mv");
-  options.uv.anchors = "random:100";
+  DracoCompressionOptions options =
+      WithPrediction(UvPrediction::kLaplacianMeanValue);
+  options.uv.anchors = Anchors("random:100");
   EXPECT_TRUE(options.Check().ok());
-  EXPECT_NE(options, WithPrediction("laplacian_mv"));
-  options.uv.prediction = "weighted";
+  EXPECT_NE(options, WithPrediction(UvPrediction::kLaplacianMeanValue));
+  options.uv.prediction = UvPrediction::kWeighted;
   EXPECT_FALSE(options.Check().ok());
-  options.uv.prediction = "laplacian_cotan";
-  options.uv.anchors = "-5";
+  // Anchors alone are not stock options that pass unchecked.
+  options.uv.prediction = UvPrediction::kDraco;
   EXPECT_FALSE(options.Check().ok());
+  options.uv.prediction = UvPrediction::kLaplacianCotan;
+  EXPECT_TRUE(options.Check().ok());
 }
 
-TEST(UvCompressionOptionsTest, CheckSeamsNeedKnownNameAndEdgebreaker) {
+TEST(UvCompressionOptionsTest, CheckSeamsNeedEdgebreaker) {
   DracoCompressionOptions options;
-  options.uv.seams = "draco";
+  options.uv.seams = UvSeamCoding::kDraco;
   EXPECT_TRUE(options.uv.IsStock());
-  options.uv.seams = "context";
+  options.uv.seams = UvSeamCoding::kContext;
   EXPECT_FALSE(options.uv.IsStock());
   EXPECT_TRUE(options.Check().ok());
   EXPECT_NE(options, DracoCompressionOptions());
   options.compression_level = 0;
   EXPECT_FALSE(options.Check().ok());
   options.compression_level = 7;
-  options.uv.seams = "contxt";
-  EXPECT_FALSE(options.Check().ok());
+  EXPECT_TRUE(options.Check().ok());
 }
 
 }  // namespace

@@ -20,28 +20,10 @@
 namespace draco {
 namespace {
 
-TEST(UvPredictionOptionsTest, ParsesEveryDocumentedName) {
-  for (const UvPredictionName &entry : UvPredictionNames()) {
-    const auto method = ParseUvPredictionName(entry.name);
-    ASSERT_TRUE(method.ok()) << entry.name;
-    EXPECT_EQ(method.value(), entry.method);
-    EXPECT_NE(UvPredictionUsage().find(entry.name), std::string::npos);
-  }
-  EXPECT_EQ(ParseUvPredictionName("weighted").value(),
-            MESH_PREDICTION_TEX_COORDS_WEIGHTED);
-  EXPECT_EQ(ParseUvPredictionName("portable").value(),
-            MESH_PREDICTION_TEX_COORDS_PORTABLE);
-  EXPECT_TRUE(IsAutoUvPrediction("auto"));
-}
-
-TEST(UvPredictionOptionsTest, RejectsUnknownNameListingValidNames) {
-  const auto method = ParseUvPredictionName("weigthed");
-  ASSERT_FALSE(method.ok());
-  const std::string message = method.status().error_msg_string();
-  EXPECT_NE(message.find("weigthed"), std::string::npos);
-  for (const UvPredictionName &entry : UvPredictionNames()) {
-    EXPECT_NE(message.find(entry.name), std::string::npos) << message;
-  }
+UvCompressionOptions WithPrediction(UvPrediction prediction) {
+  UvCompressionOptions options;
+  options.prediction = prediction;
+  return options;
 }
 
 class UvPredictionConfigureTest : public ::testing::Test {
@@ -51,47 +33,86 @@ class UvPredictionConfigureTest : public ::testing::Test {
     ASSERT_TRUE(mesh.ok());
     mesh_ = std::move(mesh).value();
   }
+  // An encoder at draco_encoder's defaults but -qp/-qt 11.
+  std::unique_ptr<ExpertEncoder> MakeEncoder() const {
+    std::unique_ptr<ExpertEncoder> encoder(new ExpertEncoder(*mesh_));
+    for (int i = 0; i < mesh_->num_attributes(); ++i) {
+      encoder->SetAttributeQuantization(i, 11);
+    }
+    return encoder;
+  }
   std::unique_ptr<Mesh> mesh_;
 };
 
+// Every lossless named prediction sets its Draco scheme on every TEX_COORD
+// attribute and on nothing else; "draco" sets nothing.
+TEST_F(UvPredictionConfigureTest, SetsTheNamedSchemeOnTexCoordsOnly) {
+  for (const UvPredictionName &entry : UvPredictionNames()) {
+    if (entry.prediction == UvPrediction::kAuto ||
+        IsUvLaplacian(entry.prediction)) {
+      continue;
+    }
+    const std::unique_ptr<ExpertEncoder> encoder = MakeEncoder();
+    const auto summary = ConfigureUvPrediction(WithPrediction(entry.prediction),
+                                               mesh_.get(), encoder.get());
+    ASSERT_TRUE(summary.ok()) << entry.name << ": "
+                              << summary.status().error_msg();
+    EXPECT_EQ(summary.value().empty(), entry.prediction == UvPrediction::kDraco)
+        << entry.name;
+    for (int i = 0; i < mesh_->num_attributes(); ++i) {
+      const bool tex_coord = mesh_->attribute(i)->attribute_type() ==
+                             GeometryAttribute::TEX_COORD;
+      EXPECT_EQ(encoder->options().GetAttributeInt(i, "prediction_scheme",
+                                                   PREDICTION_UNDEFINED),
+                tex_coord ? entry.method : PREDICTION_UNDEFINED)
+          << entry.name << " attribute " << i;
+    }
+  }
+}
+
 TEST_F(UvPredictionConfigureTest, DracoNameLeavesTheOutputUnchanged) {
-  const auto none = EncodeMeshToBytes(*mesh_, {14, 12, 10, ""});
-  const auto draco = EncodeMeshToBytes(*mesh_, {14, 12, 10, "draco"});
+  const auto none = EncodeMeshToBytes(*mesh_, {14, 12, 10});
+  const auto draco = EncodeMeshToBytes(*mesh_, Settings(14, 12, 10, "draco"));
   ASSERT_TRUE(none.ok() && draco.ok());
   EXPECT_EQ(none.value(), draco.value());
 }
 
 TEST_F(UvPredictionConfigureTest, RejectsSequentialEncoding) {
-  const auto result = EncodeMeshToBytes(*mesh_, {14, 12, 0, "weighted"});
+  const auto result =
+      EncodeMeshToBytes(*mesh_, Settings(14, 12, 0, "weighted"));
   ASSERT_FALSE(result.ok());
   EXPECT_NE(result.status().error_msg_string().find("-cl"), std::string::npos);
 }
 
 TEST_F(UvPredictionConfigureTest, RejectsUnquantizedTexCoords) {
-  EXPECT_FALSE(EncodeMeshToBytes(*mesh_, {14, 0, 10, "weighted"}).ok());
+  EXPECT_FALSE(
+      EncodeMeshToBytes(*mesh_, Settings(14, 0, 10, "weighted")).ok());
 }
 
 TEST_F(UvPredictionConfigureTest, RejectsQuantizationBeyondTheSupportedRange) {
-  const auto result = EncodeMeshToBytes(*mesh_, {14, 21, 10, "weighted"});
+  const auto result =
+      EncodeMeshToBytes(*mesh_, Settings(14, 21, 10, "weighted"));
   ASSERT_FALSE(result.ok());
   EXPECT_NE(result.status().error_msg_string().find("-qt up to 20"),
             std::string::npos);
-  EXPECT_TRUE(EncodeMeshToBytes(*mesh_, {14, 20, 10, "weighted"}).ok());
+  EXPECT_TRUE(
+      EncodeMeshToBytes(*mesh_, Settings(14, 20, 10, "weighted")).ok());
   // auto simply leaves the scheme out.
-  EXPECT_TRUE(EncodeMeshToBytes(*mesh_, {14, 21, 10, "auto"}).ok());
+  EXPECT_TRUE(EncodeMeshToBytes(*mesh_, Settings(14, 21, 10, "auto")).ok());
 }
 
 TEST_F(UvPredictionConfigureTest, RejectsPointClouds) {
   ExpertEncoder encoder(*mesh_);
-  EXPECT_FALSE(ConfigureUvPrediction("weighted", nullptr, &encoder).ok());
+  EXPECT_FALSE(
+      ConfigureUvPrediction(WithPrediction(UvPrediction::kWeighted), nullptr,
+                            &encoder)
+          .ok());
 }
 
 TEST_F(UvPredictionConfigureTest, SummaryNamesTheChosenScheme) {
-  ExpertEncoder encoder(*mesh_);
-  for (int i = 0; i < mesh_->num_attributes(); ++i) {
-    encoder.SetAttributeQuantization(i, 11);
-  }
-  const auto summary = ConfigureUvPrediction("weighted", mesh_.get(), &encoder);
+  const std::unique_ptr<ExpertEncoder> encoder = MakeEncoder();
+  const auto summary = ConfigureUvPrediction(
+      WithPrediction(UvPrediction::kWeighted), mesh_.get(), encoder.get());
   ASSERT_TRUE(summary.ok()) << summary.status().error_msg();
   EXPECT_NE(summary.value().find("TEX_COORD 0"), std::string::npos);
   EXPECT_NE(summary.value().find("weighted"), std::string::npos);
@@ -104,9 +125,9 @@ TEST(UvPredictionAutoTest, IsNeverLargerThanStockOnDracoTestdata) {
     const auto mesh = ReadTestMesh(DracoTestdataPath(name));
     ASSERT_TRUE(mesh.ok()) << name;
     for (const int cl : {7, 10}) {
-      const auto stock = EncodeMeshToBytes(*mesh.value(), {14, 10, cl, ""});
+      const auto stock = EncodeMeshToBytes(*mesh.value(), {14, 10, cl});
       const auto automatic =
-          EncodeMeshToBytes(*mesh.value(), {14, 10, cl, "auto"});
+          EncodeMeshToBytes(*mesh.value(), Settings(14, 10, cl, "auto"));
       ASSERT_TRUE(stock.ok() && automatic.ok()) << name;
       EXPECT_LE(automatic.value().size(), stock.value().size()) << name;
     }

@@ -20,24 +20,13 @@
 namespace draco {
 namespace {
 
-TEST(UvSeamOptionsTest, ParsesEveryDocumentedName) {
-  for (const UvSeamCodingName &entry : UvSeamCodingNames()) {
-    const auto coding = ParseUvSeamCodingName(entry.name);
-    ASSERT_TRUE(coding.ok()) << entry.name;
-    EXPECT_EQ(coding.value(), entry.coding);
-    EXPECT_NE(UvSeamCodingUsage().find(entry.name), std::string::npos);
-  }
-  EXPECT_EQ(ParseUvSeamCodingName("context").value(), UvSeamCoding::kContext);
-}
-
-TEST(UvSeamOptionsTest, RejectsUnknownNameListingValidNames) {
-  const auto coding = ParseUvSeamCodingName("contex");
-  ASSERT_FALSE(coding.ok());
-  const std::string message = coding.status().error_msg_string();
-  EXPECT_NE(message.find("contex"), std::string::npos);
-  for (const UvSeamCodingName &entry : UvSeamCodingNames()) {
-    EXPECT_NE(message.find(entry.name), std::string::npos) << message;
-  }
+TEST(UvSeamOptionsTest, SetsAndReadsTheCodingOnEncoderOptions) {
+  EncoderOptions options = EncoderOptions::CreateDefaultOptions();
+  EXPECT_EQ(GetUvSeamCoding(options), UvSeamCoding::kDraco);
+  SetUvSeamCoding(UvSeamCoding::kContext, &options);
+  EXPECT_EQ(GetUvSeamCoding(options), UvSeamCoding::kContext);
+  SetUvSeamCoding(UvSeamCoding::kDraco, &options);
+  EXPECT_EQ(GetUvSeamCoding(options), UvSeamCoding::kDraco);
 }
 
 class UvSeamConfigureTest : public ::testing::Test {
@@ -53,7 +42,8 @@ class UvSeamConfigureTest : public ::testing::Test {
 TEST_F(UvSeamConfigureTest, DracoOrNoNameLeavesTheOutputUnchanged) {
   for (const int cl : {0, 3, 7, 10}) {
     const auto none = EncodeMeshToBytes(*mesh_, {14, 12, cl});
-    const auto draco = EncodeMeshToBytes(*mesh_, {14, 12, cl, "", "draco"});
+    const auto draco =
+        EncodeMeshToBytes(*mesh_, Settings(14, 12, cl, "draco+draco"));
     ASSERT_TRUE(none.ok() && draco.ok());
     EXPECT_EQ(none.value(), draco.value()) << cl;
   }
@@ -61,7 +51,8 @@ TEST_F(UvSeamConfigureTest, DracoOrNoNameLeavesTheOutputUnchanged) {
 
 TEST_F(UvSeamConfigureTest, ContextChangesAndShrinksTheSeams) {
   const auto stock = EncodeMeshToBytes(*mesh_, {14, 12, 10});
-  const auto context = EncodeMeshToBytes(*mesh_, {14, 12, 10, "", "context"});
+  const auto context =
+      EncodeMeshToBytes(*mesh_, Settings(14, 12, 10, "draco+context"));
   ASSERT_TRUE(stock.ok() && context.ok());
   EXPECT_LT(context.value().size(), stock.value().size());
 }
@@ -69,7 +60,8 @@ TEST_F(UvSeamConfigureTest, ContextChangesAndShrinksTheSeams) {
 TEST_F(UvSeamConfigureTest, ContextKeepsStockWhereDracoCodesNoSeams) {
   // -cl 1..4: Draco cuts the mesh along the seams.
   const auto stock = EncodeMeshToBytes(*mesh_, {14, 12, 3});
-  const auto context = EncodeMeshToBytes(*mesh_, {14, 12, 3, "", "context"});
+  const auto context =
+      EncodeMeshToBytes(*mesh_, Settings(14, 12, 3, "draco+context"));
   ASSERT_TRUE(stock.ok() && context.ok());
   EXPECT_EQ(stock.value(), context.value());
   // Positions only: no seams at all.
@@ -79,23 +71,30 @@ TEST_F(UvSeamConfigureTest, ContextKeepsStockWhereDracoCodesNoSeams) {
       plain.GetNamedAttributeId(GeometryAttribute::TEX_COORD));
   const auto plain_stock = EncodeMeshToBytes(plain, {14, 12, 10});
   const auto plain_context =
-      EncodeMeshToBytes(plain, {14, 12, 10, "", "context"});
+      EncodeMeshToBytes(plain, Settings(14, 12, 10, "draco+context"));
   ASSERT_TRUE(plain_stock.ok() && plain_context.ok());
   EXPECT_EQ(plain_stock.value(), plain_context.value());
   ExpertEncoder encoder(plain);
-  const auto summary = ConfigureUvSeams("context", &plain, &encoder);
+  const auto summary =
+      ConfigureUvSeams(UvSeamCoding::kContext, &plain, &encoder);
   ASSERT_TRUE(summary.ok());
   EXPECT_NE(summary.value().find("stock coding kept"), std::string::npos);
 }
 
 TEST_F(UvSeamConfigureTest, ContextNeedsEdgebreakerAndAMesh) {
-  const auto sequential = EncodeMeshToBytes(*mesh_, {14, 12, 0, "", "context"});
+  const auto sequential =
+      EncodeMeshToBytes(*mesh_, Settings(14, 12, 0, "draco+context"));
   ASSERT_FALSE(sequential.ok());
   EXPECT_NE(sequential.status().error_msg_string().find("-cl"),
             std::string::npos);
   ExpertEncoder encoder(*mesh_);
-  EXPECT_FALSE(ConfigureUvSeams("context", nullptr, &encoder).ok());
-  EXPECT_FALSE(ConfigureUvSeams("seams", mesh_.get(), &encoder).ok());
+  EXPECT_FALSE(
+      ConfigureUvSeams(UvSeamCoding::kContext, nullptr, &encoder).ok());
+  // Stock coding needs nothing and changes nothing.
+  const auto stock = ConfigureUvSeams(UvSeamCoding::kDraco, nullptr, &encoder);
+  ASSERT_TRUE(stock.ok());
+  EXPECT_EQ(stock.value(), "");
+  EXPECT_EQ(GetUvSeamCoding(encoder.options()), UvSeamCoding::kDraco);
 }
 
 }  // namespace

@@ -68,9 +68,9 @@ void ExpectSameMesh(const Mesh &expected, const Mesh &actual,
 std::vector<char> ExpectContextSeamsDecodeLikeStock(const Mesh &mesh,
                                                     UvEncodeSettings settings,
                                                     const std::string &label) {
-  settings.uv_seams = "";
+  settings.uv.seams = UvSeamCoding::kDraco;
   const auto stock = EncodeMeshToBytes(mesh, settings);
-  settings.uv_seams = "context";
+  settings.uv.seams = UvSeamCoding::kContext;
   const auto context = EncodeMeshToBytes(mesh, settings);
   EXPECT_TRUE(stock.ok() && context.ok()) << label;
   if (!stock.ok() || !context.ok()) {
@@ -142,7 +142,8 @@ TEST(UvSeamEdgebreakerTest, CombinesWithEveryUvPrediction) {
     const auto mesh = ReadTestMesh(meshes[i]);
     ASSERT_TRUE(mesh.ok()) << meshes[i];
     const std::string &uv_pred = uv_preds[i % uv_preds.size()];
-    ExpectContextSeamsDecodeLikeStock(*mesh.value(), {14, 12, 10, uv_pred},
+    ExpectContextSeamsDecodeLikeStock(*mesh.value(),
+                                      Settings(14, 12, 10, uv_pred),
                                       meshes[i] + " " + uv_pred);
   }
 }
@@ -194,7 +195,7 @@ TEST(UvSeamEdgebreakerTest, CorruptOrTruncatedSeamDataFailsToDecode) {
     const auto mesh = ReadTestMesh(UvTestdataPath(name));
     ASSERT_TRUE(mesh.ok()) << name;
     for (const int cl : {5, 10}) {
-      const UvEncodeSettings settings{14, 12, cl, "", "context"};
+      const UvEncodeSettings settings = Settings(14, 12, cl, "draco+context");
       const auto file = EncodeMeshToBytes(*mesh.value(), settings);
       const auto problem = BuildUvSeamProblem(*mesh.value(), settings);
       ASSERT_TRUE(file.ok() && problem.ok()) << name;

@@ -283,11 +283,10 @@ struct RoundTripCase {
 // bit-identical, since both are lossless on the same quantisation grid.
 void ExpectWeightedMatchesStock(const Mesh &mesh, const RoundTripCase &c,
                                 const std::string &label) {
-  UvEncodeSettings settings{c.qp, c.qt, c.cl, "", ""};
-  const auto stock = EncodeMeshToBytes(mesh, settings);
+  const auto stock = EncodeMeshToBytes(mesh, {c.qp, c.qt, c.cl});
   ASSERT_TRUE(stock.ok()) << label << ": " << stock.status().error_msg();
-  settings.uv_pred = c.scheme;
-  const auto ours = EncodeMeshToBytes(mesh, settings);
+  const auto ours =
+      EncodeMeshToBytes(mesh, Settings(c.qp, c.qt, c.cl, c.scheme));
   ASSERT_TRUE(ours.ok()) << label << ": " << ours.status().error_msg();
   const auto stock_mesh = DecodeDracoMesh(stock.value());
   const auto our_mesh = DecodeDracoMesh(ours.value());

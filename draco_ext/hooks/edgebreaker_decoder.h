@@ -1,0 +1,26 @@
+// Copyright 2026 The draco-uv Authors.
+//
+// Licensed under the Apache License, Version 2.0 (the "License");
+// you may not use this file except in compliance with the License.
+// You may obtain a copy of the License at
+//
+//      http://www.apache.org/licenses/LICENSE-2.0
+//
+// Unless required by applicable law or agreed to in writing, software
+// distributed under the License is distributed on an "AS IS" BASIS,
+// WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+// See the License for the specific language governing permissions and
+// limitations under the License.
+//
+// What Draco's Edgebreaker decoder calls for files with context-coded
+// attribute seams (patches/0007): IsUvSeamEdgebreakerMethod() and
+// CreateUvSeamEdgebreakerDecoderImpl() create the decoder of the method id,
+// and the traversal decoders are instantiated in
+// mesh_edgebreaker_decoder_impl.cc.
+#ifndef DRACO_EXT_HOOKS_EDGEBREAKER_DECODER_H_
+#define DRACO_EXT_HOOKS_EDGEBREAKER_DECODER_H_
+
+#include "draco_ext/seams/uv_seam_edgebreaker.h"  // IWYU pragma: export
+#include "draco_ext/seams/mesh_edgebreaker_traversal_uv_seam_decoder.h"  // IWYU pragma: export
+
+#endif  // DRACO_EXT_HOOKS_EDGEBREAKER_DECODER_H_

@@ -1,0 +1,27 @@
+// Copyright 2026 The draco-uv Authors.
+//
+// Licensed under the Apache License, Version 2.0 (the "License");
+// you may not use this file except in compliance with the License.
+// You may obtain a copy of the License at
+//
+//      http://www.apache.org/licenses/LICENSE-2.0
+//
+// Unless required by applicable law or agreed to in writing, software
+// distributed under the License is distributed on an "AS IS" BASIS,
+// WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+// See the License for the specific language governing permissions and
+// limitations under the License.
+//
+// draco-uv's command-line flags as draco_encoder (patches/0004) and
+// draco_transcoder (patches/0011) take them: IsUvCompressionFlag() and
+// ParseUvCompressionFlag() read -uv_pred, -uv_seams and -uv_anchors into a
+// UvCompressionOptions, UvCompressionUsage() is their help text, and
+// ConfigureUvCompression() applies them to draco_encoder's ExpertEncoder. A
+// new flag changes none of the patches.
+#ifndef DRACO_EXT_HOOKS_TOOL_FLAGS_H_
+#define DRACO_EXT_HOOKS_TOOL_FLAGS_H_
+
+#include "draco_ext/options/uv_compression_options.h"  // IWYU pragma: export
+#include "draco_ext/options/uv_configure.h"  // IWYU pragma: export
+
+#endif  // DRACO_EXT_HOOKS_TOOL_FLAGS_H_

@@ -1,0 +1,45 @@
+// Copyright 2026 The draco-uv Authors.
+//
+// Licensed under the Apache License, Version 2.0 (the "License");
+// you may not use this file except in compliance with the License.
+// You may obtain a copy of the License at
+//
+//      http://www.apache.org/licenses/LICENSE-2.0
+//
+// Unless required by applicable law or agreed to in writing, software
+// distributed under the License is distributed on an "AS IS" BASIS,
+// WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+// See the License for the specific language governing permissions and
+// limitations under the License.
+//
+// ConfigureUvCompression(): the one place that turns UvCompressionOptions
+// into Draco encoder settings. draco_encoder (patches/0004), the glTF
+// encoder (gltf/uv_gltf.h), EncodeMeshWithSettings() (uv_encode_settings.h)
+// and so draco_uv_eval and the benchmarks all go through it, so a flag means
+// the same, with the same checks, whatever the entry point.
+#ifndef DRACO_EXT_OPTIONS_UV_CONFIGURE_H_
+#define DRACO_EXT_OPTIONS_UV_CONFIGURE_H_
+
+#include <string>
+
+#include "draco/compression/expert_encode.h"
+#include "draco/core/status_or.h"
+#include "draco/mesh/mesh.h"
+#include "draco_ext/options/uv_compression_options.h"
+
+namespace draco {
+
+// Checks |options| (CheckUvCompressionOptions()) and applies them to
+// |encoder|, which encodes |mesh| (null for a point cloud) and whose other
+// options must already be set: first the seam coding, then the prediction
+// of every TEX_COORD attribute with its Laplacian settings, in that order
+// because -uv_pred auto measures candidates with the chosen seam coding.
+// Stock options leave |encoder| untouched. Returns the per-attribute
+// summary lines for command-line tools ("" when nothing changed).
+StatusOr<std::string> ConfigureUvCompression(
+    const UvCompressionOptions &options, const Mesh *mesh,
+    ExpertEncoder *encoder);
+
+}  // namespace draco
+
+#endif  // DRACO_EXT_OPTIONS_UV_CONFIGURE_H_
