@@ -102,6 +102,42 @@ void PrintRow(const draco::UvSeamStats &s) {
       s.sizes_match_files ? "yes" : "NO");
 }
 
+// Opens |path| for writing and writes the CSV header; null on failure.
+FILE *OpenCsv(const std::string &path) {
+  FILE *csv = fopen(path.c_str(), "w");
+  if (csv != nullptr) {
+    fprintf(csv,
+            "mesh,attributes,vertices,interior_edges,seam_edges,eq1_bpv,"
+            "eq2_bpv,per_edge_entropy_bytes,per_edge_bytes,per_vertex_bytes,"
+            "stock_bytes,"
+            "context_bytes,sizes_match_files\n");
+  }
+  return csv;
+}
+
+void WriteCsvRow(const draco::UvSeamStats &s, FILE *csv) {
+  fprintf(csv, "%s,%d,%lld,%lld,%lld,%.4f,%.4f,%.1f,%lld,%lld,%lld,%lld,%d\n",
+          s.mesh.c_str(), s.attributes, static_cast<long long>(s.vertices),
+          static_cast<long long>(s.interior_edges),
+          static_cast<long long>(s.seam_edges), s.eq1_bpv, s.eq2_bpv,
+          s.per_edge_entropy_bytes, static_cast<long long>(s.per_edge_bytes),
+          static_cast<long long>(s.per_vertex_bytes),
+          static_cast<long long>(s.stock_bytes),
+          static_cast<long long>(s.context_bytes), s.sizes_match_files);
+}
+
+// Adds the byte and edge counts of |s| to |total| (the TOTAL row).
+void AddToTotal(const draco::UvSeamStats &s, draco::UvSeamStats *total) {
+  total->vertices += s.vertices;
+  total->seam_edges += s.seam_edges;
+  total->per_edge_entropy_bytes += s.per_edge_entropy_bytes;
+  total->per_edge_bytes += s.per_edge_bytes;
+  total->per_vertex_bytes += s.per_vertex_bytes;
+  total->stock_bytes += s.stock_bytes;
+  total->context_bytes += s.context_bytes;
+  total->sizes_match_files = total->sizes_match_files && s.sizes_match_files;
+}
+
 }  // namespace
 
 int main(int argc, char **argv) {
@@ -113,17 +149,9 @@ int main(int argc, char **argv) {
   const std::vector<std::string> files = draco::ListMeshFiles(args.input);
   const std::vector<fs::path> meshes(files.begin(), files.end());
   FILE *csv = nullptr;
-  if (!args.csv.empty()) {
-    csv = fopen(args.csv.c_str(), "w");
-    if (csv == nullptr) {
-      fprintf(stderr, "Error: cannot write %s.\n", args.csv.c_str());
-      return 1;
-    }
-    fprintf(csv,
-            "mesh,attributes,vertices,interior_edges,seam_edges,eq1_bpv,"
-            "eq2_bpv,per_edge_entropy_bytes,per_edge_bytes,per_vertex_bytes,"
-            "stock_bytes,"
-            "context_bytes,sizes_match_files\n");
+  if (!args.csv.empty() && (csv = OpenCsv(args.csv)) == nullptr) {
+    fprintf(stderr, "Error: cannot write %s.\n", args.csv.c_str());
+    return 1;
   }
   printf("%-28s %7s %6s %6s %6s %6s %9s %6s %9s %6s %9s %6s %9s %6s %6s %s\n",
          "mesh", "V", "seams", "eq1", "eq2", "H", "per-edge", "bpv", "per-vert",
@@ -152,24 +180,9 @@ int main(int argc, char **argv) {
     PrintRow(s);
     fflush(stdout);
     if (csv != nullptr) {
-      fprintf(
-          csv, "%s,%d,%lld,%lld,%lld,%.4f,%.4f,%.1f,%lld,%lld,%lld,%lld,%d\n",
-          s.mesh.c_str(), s.attributes, static_cast<long long>(s.vertices),
-          static_cast<long long>(s.interior_edges),
-          static_cast<long long>(s.seam_edges), s.eq1_bpv, s.eq2_bpv,
-          s.per_edge_entropy_bytes, static_cast<long long>(s.per_edge_bytes),
-          static_cast<long long>(s.per_vertex_bytes),
-          static_cast<long long>(s.stock_bytes),
-          static_cast<long long>(s.context_bytes), s.sizes_match_files);
+      WriteCsvRow(s, csv);
     }
-    total.vertices += s.vertices;
-    total.seam_edges += s.seam_edges;
-    total.per_edge_entropy_bytes += s.per_edge_entropy_bytes;
-    total.per_edge_bytes += s.per_edge_bytes;
-    total.per_vertex_bytes += s.per_vertex_bytes;
-    total.stock_bytes += s.stock_bytes;
-    total.context_bytes += s.context_bytes;
-    total.sizes_match_files = total.sizes_match_files && s.sizes_match_files;
+    AddToTotal(s, &total);
   }
   if (meshes.size() > 1) {
     PrintRow(total);
