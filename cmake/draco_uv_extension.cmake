@@ -40,14 +40,25 @@ list(
 
 # Object libraries with Draco's include paths (the prediction scheme lists
 # above are header-only and compiled without them).
+#
+# Which list a source joins matters for Draco's Emscripten build, whose
+# draco_decoder target links only the decoder lists (*_dec_*, *_decode_*)
+# and draco_encoder only the encoder lists (*_enc_*, *_encode_*), both the
+# common ones; libdraco links them all. Sources that both sides use (coders
+# with an encoding and a decoding half, models, topology, the Laplacian
+# system the encoder also solves) go to the common list
+# draco_compression_entropy_sources.
 list(
   APPEND draco_compression_decode_sources
+         "${draco_uv_ext}/hooks/edgebreaker_decoder.h"
+         "${draco_uv_ext}/seams/mesh_edgebreaker_traversal_uv_seam_decoder.h"
+         "${draco_uv_ext}/seams/uv_seam_edgebreaker_decoder.cc")
+list(
+  APPEND draco_compression_entropy_sources
          "${draco_uv_ext}/common/uv_residual_coder.cc"
          "${draco_uv_ext}/common/uv_residual_coder.h"
          "${draco_uv_ext}/seams/uv_seam_bit_model.cc"
          "${draco_uv_ext}/seams/uv_seam_bit_model.h"
-         "${draco_uv_ext}/hooks/edgebreaker_decoder.h"
-         "${draco_uv_ext}/seams/mesh_edgebreaker_traversal_uv_seam_decoder.h"
          "${draco_uv_ext}/seams/uv_seam_coder.cc"
          "${draco_uv_ext}/seams/uv_seam_coder.h"
          "${draco_uv_ext}/seams/uv_seam_edgebreaker.cc"
@@ -64,7 +75,7 @@ set(DRACO_UV_DENSE_FRONT_AVX2 OFF CACHE INTERNAL "")
 # out.
 if(DRACO_UV_LAPLACIAN)
   list(
-    APPEND draco_compression_decode_sources
+    APPEND draco_compression_entropy_sources
            "${draco_uv_ext}/laplacian/mesh_prediction_scheme_tex_coords_laplacian_decoder.h"
            "${draco_uv_ext}/laplacian/mesh_prediction_scheme_tex_coords_laplacian_encoder.h"
            "${draco_uv_ext}/laplacian/mesh_prediction_scheme_tex_coords_laplacian_shared.h"
@@ -89,7 +100,7 @@ if(DRACO_UV_LAPLACIAN)
   if(CMAKE_SYSTEM_PROCESSOR MATCHES "^(x86_64|AMD64|amd64)$"
      AND CMAKE_CXX_COMPILER_ID MATCHES "GNU|Clang"
      AND DRACO_UV_COMPILER_HAS_AVX2_FMA)
-    list(APPEND draco_compression_decode_sources
+    list(APPEND draco_compression_entropy_sources
          "${draco_uv_ext}/linalg/dense_front_avx2.cc")
     set_source_files_properties("${draco_uv_ext}/linalg/dense_front_avx2.cc"
                                 PROPERTIES COMPILE_OPTIONS "-mavx2;-mfma")

@@ -12,13 +12,13 @@
 // See the License for the specific language governing permissions and
 // limitations under the License.
 //
-// The decoder side of uv_seam_edgebreaker.h and what both sides share; the
-// encoder side is in uv_seam_edgebreaker_encoder.cc.
+// What both sides of uv_seam_edgebreaker.h share; the encoder and decoder
+// sides are in uv_seam_edgebreaker_encoder.cc and
+// uv_seam_edgebreaker_decoder.cc (apart, so that a build of only one side,
+// such as Draco's WebAssembly encoder, needs none of the other's code).
 #include "draco_ext/seams/uv_seam_edgebreaker.h"
 
 #include "draco/compression/config/compression_shared.h"
-#include "draco/compression/mesh/mesh_edgebreaker_decoder_impl.h"
-#include "draco_ext/seams/mesh_edgebreaker_traversal_uv_seam_decoder.h"
 #include "draco_ext/seams/uv_seam_topology.h"
 
 namespace draco {
@@ -26,21 +26,6 @@ namespace draco {
 bool IsUvSeamEdgebreakerMethod(int method) {
   return method == MESH_EDGEBREAKER_STANDARD_CONTEXT_SEAMS_ENCODING ||
          method == MESH_EDGEBREAKER_VALENCE_CONTEXT_SEAMS_ENCODING;
-}
-
-std::unique_ptr<MeshEdgebreakerDecoderImplInterface>
-CreateUvSeamEdgebreakerDecoderImpl(int method) {
-  if (method == MESH_EDGEBREAKER_STANDARD_CONTEXT_SEAMS_ENCODING) {
-    return std::unique_ptr<MeshEdgebreakerDecoderImplInterface>(
-        new MeshEdgebreakerDecoderImpl<
-            MeshEdgebreakerTraversalStandardUvSeamDecoder>());
-  }
-  if (method == MESH_EDGEBREAKER_VALENCE_CONTEXT_SEAMS_ENCODING) {
-    return std::unique_ptr<MeshEdgebreakerDecoderImplInterface>(
-        new MeshEdgebreakerDecoderImpl<
-            MeshEdgebreakerTraversalValenceUvSeamDecoder>());
-  }
-  return nullptr;
 }
 
 bool OppositesInDecoderOrder(const CornerTable &table,
