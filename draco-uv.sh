@@ -7,9 +7,16 @@
 #                        (ours and Draco's own unit tests), including a
 #                        libFuzzer smoke run and the cross-build determinism
 #                        check in extra clang builds.
+#   ./draco-uv.sh web    installs what is missing (Debian's emscripten and
+#                        the tools around it) and builds the WebAssembly/JS
+#                        decoder and encoder into build-web/ with
+#                        scripts/build-web.sh: the package folder
+#                        build-web/draco3d-uv/ (like npm draco3d and three.js's
+#                        libs/draco/), checked on the golden files.
 #
 # BUILD_DIR (default: build) selects the build folder. Extra arguments after
-# the command go to cmake at configure time (e.g. -DDRACO_SOURCE_DIR=...).
+# demo or test go to cmake at configure time (e.g. -DDRACO_SOURCE_DIR=...);
+# after web, to scripts/build-web.sh (e.g. --stock, or another folder).
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -27,12 +34,20 @@ readonly PACKAGES=(
 # a command already on PATH (e.g. from another Node.js distribution) is used
 # as it is. node and npm run stock Draco's WebAssembly decoder (npm draco3d).
 readonly COMMAND_PACKAGES=(node:nodejs npm:npm)
+# The web build: the build tools and Eigen (the Laplacian decoder) of the
+# native build, Debian's emscripten with the Python module its IDL binder
+# needs (python3-ply, only suggested by emscripten), terser to minify the JS
+# glue, brotli and wabt to measure and inspect the .wasm files.
+readonly WEB_PACKAGES=(
+  ca-certificates cmake git ninja-build dpkg-dev xz-utils libeigen3-dev
+  emscripten python3-ply terser brotli wabt
+)
 
 die() { echo "draco-uv.sh: $*" >&2; exit 1; }
 
-install_missing_packages() {
+install_missing_packages() {  # install_missing_packages PACKAGE...
   local missing=() package
-  for package in "${PACKAGES[@]}"; do
+  for package in "$@"; do
     dpkg-query -W -f='${Status}\n' "${package}" 2>/dev/null |
       grep -q '^install ok installed$' || missing+=("${package}")
   done
@@ -56,12 +71,12 @@ build() {
 }
 
 main() {
-  [[ $# -ge 1 ]] || die "usage: $0 demo|test [cmake arguments]"
+  [[ $# -ge 1 ]] || die "usage: $0 demo|test [cmake arguments] | web [build-web.sh arguments]"
   local command=$1
   shift
   case "${command}" in
     demo)
-      install_missing_packages
+      install_missing_packages "${PACKAGES[@]}"
       build "$@"
       # A real textured mesh (Keenan Crane's spot, CC0; testdata/README.md):
       # stock Draco, the default auto, the smallest lossless coder, and the
@@ -75,7 +90,7 @@ main() {
       echo "the -qt grid exactly. Rate-distortion chart: ${BUILD_DIR}/crane_spot_rd.png"
       ;;
     test)
-      install_missing_packages
+      install_missing_packages "${PACKAGES[@]}"
       build "$@"
       # The sanitizer build for the fuzz smoke run (tools.fuzz_smoke); the
       # determinism check (tools.determinism) builds its own flavours. Both
@@ -85,7 +100,11 @@ main() {
       fi
       ctest --test-dir "${BUILD_DIR}" --output-on-failure --parallel "$(nproc)"
       ;;
-    *) die "unknown command '${command}'; use demo or test" ;;
+    web)
+      install_missing_packages "${WEB_PACKAGES[@]}"
+      scripts/build-web.sh "$@"
+      ;;
+    *) die "unknown command '${command}'; use demo, test or web" ;;
   esac
 }
 

@@ -1,0 +1,188 @@
+// Copyright 2026 The draco-uv Authors.
+//
+// Licensed under the Apache License, Version 2.0 (the "License");
+// you may not use this file except in compliance with the License.
+// You may obtain a copy of the License at
+//
+//      http://www.apache.org/licenses/LICENSE-2.0
+//
+// Unless required by applicable law or agreed to in writing, software
+// distributed under the License is distributed on an "AS IS" BASIS,
+// WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+// See the License for the specific language governing permissions and
+// limitations under the License.
+
+// Decodes every golden file with a JavaScript/WebAssembly Draco decoder
+// (the draco-uv web build, scripts/build-web.sh) and compares what it
+// decodes to with testdata/golden/expected.tsv, which the native decoder
+// wrote (scripts/make-golden.sh). The digest is draco_uv_digest's
+// (draco_ext/eval/uv_decoded_digest.h), computed here in JavaScript from
+// the decoder's JS API:
+//
+//   "faces=F points=P" and, per attribute in id order,
+//   " TYPE:DATATYPExN=HASH", HASH being the FNV-1a (64 bit) of the
+//   attribute's values (little-endian bytes of its data type) at every face
+//   corner in face order, with Draco's attribute transforms skipped
+//   (Decoder.SkipAttributeTransform), so the quantized integers the
+//   bitstream codes are compared and no floating point arithmetic.
+//
+// The lossy Laplacian golden files (testdata/golden/lossy/) have no expected
+// values (their decoded floats may differ between builds); each must decode.
+//
+//   node tests/web/check_golden.js MODULE.js [GOLDEN_DIR]
+//
+// MODULE.js is a decoder module that defines DracoDecoderModule, e.g.
+// build-web/draco3d-uv/draco_wasm_wrapper.js (its .wasm is read from
+// draco_decoder.wasm next to it), draco_decoder.js (asm.js) or
+// gltf/draco_wasm_wrapper.js. Prints one line per file and a closing
+// "golden: N passed, M failed"; exits 1 on any failure.
+'use strict';
+
+const fs = require('fs');
+const path = require('path');
+
+const kFnvOffset = 0xcbf29ce484222325n;
+const kFnvPrime = 0x100000001b3n;
+const kMask64 = 0xffffffffffffffffn;
+
+// Names as in GeometryAttribute::TypeToString() and the digest's
+// DataTypeName().
+const kAttributeTypeNames = ['POSITION', 'NORMAL', 'COLOR', 'TEX_COORD',
+                             'GENERIC'];
+const kDataTypes = {
+  // draco DataType: [name, bytes, typed array, decoder's DT_* constant]
+  1: ['int8', 1, Int8Array],
+  2: ['uint8', 1, Uint8Array],
+  3: ['int16', 2, Int16Array],
+  4: ['uint16', 2, Uint16Array],
+  5: ['int32', 4, Int32Array],
+  6: ['uint32', 4, Uint32Array],
+  9: ['float32', 4, Float32Array],
+};
+
+function fnv1a64(bytes, hash) {
+  for (let i = 0; i < bytes.length; ++i) {
+    hash = ((hash ^ BigInt(bytes[i])) * kFnvPrime) & kMask64;
+  }
+  return hash;
+}
+
+// Loads the decoder module MODULE.js with draco_decoder.wasm next to it read
+// from disk and passed as wasmBinary: the glue of Debian's emscripten 3.1.6
+// would try fetch() on a file path in Node 18+. An asm.js module ignores it.
+async function loadDecoder(modulePath) {
+  const factory = require(path.resolve(modulePath));
+  const wasmPath = path.join(path.dirname(modulePath), 'draco_decoder.wasm');
+  const options = {};
+  if (fs.existsSync(wasmPath)) options.wasmBinary = fs.readFileSync(wasmPath);
+  return factory(options);
+}
+
+// Returns the digest line of the mesh in |data| or throws with the
+// decoder's error message.
+function digest(draco, data) {
+  const decoder = new draco.Decoder();
+  const mesh = new draco.Mesh();
+  try {
+    for (const type of [draco.POSITION, draco.NORMAL, draco.COLOR,
+                        draco.TEX_COORD, draco.GENERIC]) {
+      decoder.SkipAttributeTransform(type);
+    }
+    const status = decoder.DecodeArrayToMesh(data, data.byteLength, mesh);
+    if (!status.ok()) throw new Error(status.error_msg());
+    const numFaces = mesh.num_faces();
+    const numPoints = mesh.num_points();
+    const indexBytes = numFaces * 3 * 4;
+    const indexPtr = draco._malloc(indexBytes);
+    decoder.GetTrianglesUInt32Array(mesh, indexBytes, indexPtr);
+    const faces = new Uint32Array(draco.HEAPU8.buffer, indexPtr,
+                                  numFaces * 3).slice();
+    draco._free(indexPtr);
+    let line = `faces=${numFaces} points=${numPoints}`;
+    for (let id = 0; id < mesh.num_attributes(); ++id) {
+      const att = decoder.GetAttribute(mesh, id);
+      const components = att.num_components();
+      const type = kDataTypes[att.data_type()];
+      if (!type) throw new Error(`attribute ${id}: data type ${att.data_type()}`);
+      const [typeName, typeBytes, ArrayType] = type;
+      const valueBytes = components * typeBytes;
+      const size = numPoints * valueBytes;
+      const ptr = draco._malloc(size);
+      if (!decoder.GetAttributeDataArrayForAllPoints(mesh, att,
+                                                     att.data_type(), size,
+                                                     ptr)) {
+        draco._free(ptr);
+        throw new Error(`attribute ${id}: no values`);
+      }
+      // Little-endian bytes of every point's values, as the native digest
+      // hashes them (WebAssembly memory is little-endian).
+      const values = new Uint8Array(
+          new ArrayType(draco.HEAPU8.buffer, ptr, numPoints * components)
+              .slice().buffer);
+      draco._free(ptr);
+      let hash = kFnvOffset;
+      for (const point of faces) {
+        hash = fnv1a64(values.subarray(point * valueBytes,
+                                       (point + 1) * valueBytes), hash);
+      }
+      line += ` ${kAttributeTypeNames[att.attribute_type()]}:${typeName}` +
+              `x${components}=${hash.toString(16).padStart(16, '0')}`;
+    }
+    return line;
+  } finally {
+    draco.destroy(mesh);
+    draco.destroy(decoder);
+  }
+}
+
+async function main() {
+  const [modulePath, goldenArg] = process.argv.slice(2);
+  if (!modulePath) {
+    console.error('usage: node check_golden.js MODULE.js [GOLDEN_DIR]');
+    process.exit(2);
+  }
+  const goldenDir = goldenArg ||
+      path.join(__dirname, '..', '..', 'testdata', 'golden');
+  const draco = await loadDecoder(modulePath);
+  let passed = 0;
+  let failed = 0;
+  const expected = fs.readFileSync(path.join(goldenDir, 'expected.tsv'),
+                                   'utf8').split('\n').filter(Boolean);
+  for (const row of expected) {
+    const [file, want] = row.split('\t');
+    let got;
+    try {
+      got = digest(draco, fs.readFileSync(path.join(goldenDir, file)));
+    } catch (error) {
+      got = `error: ${error.message}`;
+    }
+    if (got === want) {
+      ++passed;
+      console.log(`ok ${file}`);
+    } else {
+      ++failed;
+      console.log(`FAIL ${file}\n  expected ${want}\n  decoded  ${got}`);
+    }
+  }
+  // Lossy files: decoding must succeed; the values are not pinned.
+  const lossyDir = path.join(goldenDir, 'lossy');
+  const lossy = fs.existsSync(lossyDir) ?
+      fs.readdirSync(lossyDir).filter((f) => f.endsWith('.drc')).sort() : [];
+  for (const file of lossy) {
+    try {
+      const line = digest(draco, fs.readFileSync(path.join(lossyDir, file)));
+      ++passed;
+      console.log(`ok lossy/${file} decodes (${line.split(' ', 2).join(' ')})`);
+    } catch (error) {
+      ++failed;
+      console.log(`FAIL lossy/${file}: ${error.message}`);
+    }
+  }
+  console.log(`golden: ${passed} passed, ${failed} failed`);
+  process.exit(failed === 0 && passed > 0 ? 0 : 1);
+}
+
+main().catch((error) => {
+  console.error(error);
+  process.exit(1);
+});
