@@ -27,7 +27,9 @@
 //   bitstream codes are compared and no floating point arithmetic.
 //
 // The lossy Laplacian golden files (testdata/golden/lossy/) have no expected
-// values (their decoded floats may differ between builds); each must decode.
+// values (their decoded floats may differ between builds); each must decode,
+// and its digests (quantized, and dequantized as draco_uv_digest
+// --dequantized prints it) are printed for comparisons by hand.
 //
 //   node tests/web/check_golden.js MODULE.js [GOLDEN_DIR]
 //
@@ -79,14 +81,15 @@ async function loadDecoder(modulePath) {
 }
 
 // Returns the digest line of the mesh in |data| or throws with the
-// decoder's error message.
-function digest(draco, data) {
+// decoder's error message. |dequantized|: with Draco's attribute transforms
+// (draco_uv_digest --dequantized), i.e. the values a normal decode returns.
+function digest(draco, data, dequantized = false) {
   const decoder = new draco.Decoder();
   const mesh = new draco.Mesh();
   try {
     for (const type of [draco.POSITION, draco.NORMAL, draco.COLOR,
                         draco.TEX_COORD, draco.GENERIC]) {
-      decoder.SkipAttributeTransform(type);
+      if (!dequantized) decoder.SkipAttributeTransform(type);
     }
     const status = decoder.DecodeArrayToMesh(data, data.byteLength, mesh);
     if (!status.ok()) throw new Error(status.error_msg());
@@ -170,9 +173,11 @@ async function main() {
       fs.readdirSync(lossyDir).filter((f) => f.endsWith('.drc')).sort() : [];
   for (const file of lossy) {
     try {
-      const line = digest(draco, fs.readFileSync(path.join(lossyDir, file)));
+      const data = fs.readFileSync(path.join(lossyDir, file));
+      const line = digest(draco, data) + '\tdequantized: ' +
+          digest(draco, data, true);
       ++passed;
-      console.log(`ok lossy/${file} decodes (${line.split(' ', 2).join(' ')})`);
+      console.log(`ok lossy/${file}\t${line}`);
     } catch (error) {
       ++failed;
       console.log(`FAIL lossy/${file}: ${error.message}`);
