@@ -3,15 +3,23 @@
 # bytes of draco-uv's WebAssembly/JS decoder and encoder against stock
 # Draco 1.5.5 built the same way, npm draco3d's and three.js's copies.
 #
-#   scripts/web-sizes.sh [OUT]        (OUT: build-web, as scripts/build-web.sh)
+#   scripts/web-sizes.sh [--breakdown] [OUT]   (OUT: build-web, as build-web.sh)
 #
 # Runs scripts/build-web.sh --stock OUT (builds what is missing), unpacks
 # the pinned npm packages below with `npm pack` into a temporary folder
 # (their rows are left out, with a note, when the registry is unreachable)
-# and prints Markdown tables on stdout.
+# and prints Markdown tables on stdout. With --breakdown, also links our and
+# stock's WebAssembly decoders once more from their objects with
+# --profiling-funcs (function names kept, code unchanged) into
+# OUT/profile/{uv,stock}/ and prints scripts/wasm_size_breakdown.py's tables.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
+breakdown=0
+if [[ "${1:-}" == --breakdown ]]; then
+  breakdown=1
+  shift
+fi
 readonly OUT=$(realpath -m "${1:-build-web}")
 # The releases compared with: draco3d's newest, and the three.js release
 # whose examples/jsm/libs/draco/ the feasibility check measured.
@@ -110,3 +118,27 @@ row "draco-uv \`gltf/draco_wasm_wrapper.js\` (terser)" "${ours}/gltf/draco_wasm_
 row "draco-uv \`gltf/draco_decoder.js\` (asm.js, terser)" "${ours}/gltf/draco_decoder.js"
 echo
 echo "draco-uv minus stock (gzip -9): $(delta "${ours}/gltf/draco_decoder.wasm" "${OUT}/stock-gltf/draco_decoder_gltf.wasm")"
+
+# link_with_names BUILD TARGET_JS DEST: BUILD's link command of TARGET_JS
+# (as ninja records it) run again with --profiling-funcs, output to DEST.
+link_with_names() {
+  local command
+  command=$(ninja -C "$1" -t commands "$2" | tail -n 1)
+  [[ "${command}" == *" -o $2 "* ]] || die "no link command for $2 in $1"
+  command=${command#": && "}
+  command=${command%" && :"}
+  command=${command/" -o $2 "/" -o $3 --profiling-funcs "}
+  mkdir -p "$(dirname "$3")"
+  (cd "$1" && EMSCRIPTEN=/usr/share/emscripten \
+     NODE_PATH="/usr/share/nodejs${NODE_PATH:+:${NODE_PATH}}" eval "nice ${command}")
+}
+
+if [[ ${breakdown} -eq 1 ]]; then
+  link_with_names "${OUT}/uv" draco/draco_decoder.js "${OUT}/profile/uv/draco_decoder.js"
+  link_with_names "${OUT}/stock" draco_decoder.js "${OUT}/profile/stock/draco_decoder.js"
+  echo
+  echo "### Decoder code by function (raw bytes of the code section)"
+  echo
+  scripts/wasm_size_breakdown.py "${OUT}/profile/uv/draco_decoder.wasm" \
+    "${OUT}/profile/stock/draco_decoder.wasm"
+fi
