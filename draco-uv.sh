@@ -3,10 +3,15 @@
 #
 #   ./draco-uv.sh demo   installs what is missing, builds, and runs the main
 #                        job: draco_uv_eval on a bundled mesh.
-#   ./draco-uv.sh test   installs what is missing, builds, and runs every test
-#                        (ours and Draco's own unit tests), including a
-#                        libFuzzer smoke run and the cross-build determinism
-#                        check in extra clang builds.
+#   ./draco-uv.sh test   installs what is missing (also the web build's
+#                        packages and Debian's chromium), builds, builds the
+#                        web package build-web/draco3d-uv/ as `web` does, and
+#                        runs every test with CTest: ours and Draco's own unit
+#                        tests, a libFuzzer smoke run and the cross-build
+#                        determinism check in extra clang builds, and the web
+#                        tests (tests/web/: the pinned npm packages installed
+#                        by a CTest fixture, the Node.js and headless-Chromium
+#                        tests, the package's decoders on the golden files).
 #   ./draco-uv.sh web    installs what is missing (Debian's emscripten and
 #                        the tools around it) and builds the WebAssembly/JS
 #                        decoder and encoder into build-web/ with
@@ -42,6 +47,9 @@ readonly WEB_PACKAGES=(
   ca-certificates cmake git ninja-build dpkg-dev xz-utils libeigen3-dev
   emscripten python3-ply terser brotli wabt
 )
+# The web tests besides the web build: Debian's chromium, which the browser
+# test starts headless (puppeteer-core).
+readonly WEB_TEST_PACKAGES=(chromium)
 
 die() { echo "draco-uv.sh: $*" >&2; exit 1; }
 
@@ -90,7 +98,8 @@ main() {
       echo "the -qt grid exactly. Rate-distortion chart: ${BUILD_DIR}/crane_spot_rd.png"
       ;;
     test)
-      install_missing_packages "${PACKAGES[@]}"
+      install_missing_packages "${PACKAGES[@]}" "${WEB_PACKAGES[@]}" \
+        "${WEB_TEST_PACKAGES[@]}"
       build "$@"
       # The sanitizer build for the fuzz smoke run (tools.fuzz_smoke); the
       # determinism check (tools.determinism) builds its own flavours. Both
@@ -98,6 +107,9 @@ main() {
       if command -v clang++ >/dev/null; then
         scripts/fuzz.sh build
       fi
+      # The web package the web.* tests run against (tests/web/CMakeLists.txt);
+      # its golden checks run as CTests (web.golden_*).
+      scripts/build-web.sh --no-check
       ctest --test-dir "${BUILD_DIR}" --output-on-failure --parallel "$(nproc)"
       ;;
     web)
