@@ -1,0 +1,37 @@
+/**
+ * @fileoverview Config file for the gltf-transform CLI (@gltf-transform/cli
+ * 4's --config) that reads and writes Draco with draco3d-uv:
+ *
+ *   gltf-transform draco in.glb out.glb \
+ *       --config node_modules/draco3d-uv/gltf-transform.config.mjs
+ *
+ * writes every TEXCOORD_n with draco-uv's coders and marks the file with
+ * DRACOUV_texcoord_compression when some primitive used them; any command
+ * given this config also reads such files. The coders are chosen by
+ * draco_encoder's -uv_pred / -uv_seams / -uv_anchors names in environment
+ * variables:
+ *
+ *   DRACO_UV_PRED     prediction (default "auto"; "draco" = stock Draco's)
+ *   DRACO_UV_SEAMS    seam coding (default "context"; "draco" = stock's)
+ *   DRACO_UV_ANCHORS  Laplacian anchors, e.g. "2%" (default: the scheme's)
+ *
+ * An unknown name stops the CLI with the list of valid names. The config
+ * keeps the CLI's other extensions and dependencies (meshopt, ...): it only
+ * adds to the CLI's I/O (onProgramReady).
+ */
+import {registerDracoUv} from './gltf-transform.mjs';
+
+function texCoordCompressionFromEnv(env) {
+  return {
+    prediction: env.DRACO_UV_PRED ?? 'auto',
+    seams: env.DRACO_UV_SEAMS ?? 'context',
+    anchors: env.DRACO_UV_ANCHORS || undefined,
+  };
+}
+
+export default {
+  onProgramReady: async ({io}) => {
+    await registerDracoUv(
+        io, {texCoordCompression: texCoordCompressionFromEnv(process.env)});
+  },
+};
