@@ -135,4 +135,7 @@ list(
          "${draco_uv_ext}/seams/mesh_edgebreaker_traversal_uv_seam_encoder.h"
          "${draco_uv_ext}/seams/uv_seam_edgebreaker_encoder.cc"
          "${draco_uv_ext}/options/uv_seam_options.cc"
-         "${draco_uv_ext}/options/uv_seam_options.h")
+         "${draco_uv_ext}/options/uv_seam_options.h"
+         "${draco_uv_ext}/hooks/web_encoder.h"
+         "${draco_uv_ext}/web/uv_web_encoder.cc"
+         "${draco_uv_ext}/web/uv_web_encoder.h")

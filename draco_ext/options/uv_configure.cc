@@ -30,4 +30,33 @@ StatusOr<std::string> ConfigureUvCompression(
   return seams + prediction;
 }
 
+StatusOr<std::string> ConfigureUvCompression(
+    const std::map<int, UvCompressionOptions> &per_attribute,
+    const Mesh *mesh, ExpertEncoder *encoder) {
+  UvSeamCoding seam_coding = UvSeamCoding::kDraco;
+  for (const auto &[att_id, options] : per_attribute) {
+    DRACO_RETURN_IF_ERROR(CheckUvCompressionOptions(options));
+    if (mesh != nullptr &&
+        (att_id < 0 || att_id >= mesh->num_attributes() ||
+         mesh->attribute(att_id)->attribute_type() !=
+             GeometryAttribute::TEX_COORD)) {
+      return Status(Status::DRACO_ERROR,
+                    "Attribute " + std::to_string(att_id) +
+                        " is not a TEX_COORD attribute of the mesh.");
+    }
+    if (options.seams != UvSeamCoding::kDraco) {
+      seam_coding = options.seams;
+    }
+  }
+  DRACO_ASSIGN_OR_RETURN(std::string summary,
+                         ConfigureUvSeams(seam_coding, mesh, encoder));
+  for (const auto &[att_id, options] : per_attribute) {
+    DRACO_ASSIGN_OR_RETURN(
+        const std::string prediction,
+        ConfigureUvPredictionOf(options, mesh, att_id, encoder));
+    summary += prediction;
+  }
+  return summary;
+}
+
 }  // namespace draco

@@ -20,6 +20,7 @@
 #ifndef DRACO_EXT_OPTIONS_UV_CONFIGURE_H_
 #define DRACO_EXT_OPTIONS_UV_CONFIGURE_H_
 
+#include <map>
 #include <string>
 
 #include "draco/compression/expert_encode.h"
@@ -39,6 +40,16 @@ namespace draco {
 StatusOr<std::string> ConfigureUvCompression(
     const UvCompressionOptions &options, const Mesh *mesh,
     ExpertEncoder *encoder);
+
+// Per attribute: |per_attribute| maps TEX_COORD attribute ids of |mesh| to
+// their options (an id of any other attribute is an error); attributes
+// without an entry keep stock prediction. Each entry is checked, then the
+// seams are coded with context when any entry asks for it (Edgebreaker codes
+// the seams of all attributes together), then each attribute's prediction is
+// applied in attribute order. An empty map leaves |encoder| untouched.
+StatusOr<std::string> ConfigureUvCompression(
+    const std::map<int, UvCompressionOptions> &per_attribute,
+    const Mesh *mesh, ExpertEncoder *encoder);
 
 }  // namespace draco
 

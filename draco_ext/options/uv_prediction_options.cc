@@ -189,6 +189,38 @@ StatusOr<std::string> ChooseSmallestFor(const Mesh &mesh, int att_id,
 
 }  // namespace
 
+StatusOr<std::string> ConfigureUvPredictionOf(
+    const UvCompressionOptions &options, const Mesh *mesh, int att_id,
+    ExpertEncoder *encoder) {
+  if (options.prediction == UvPrediction::kDraco) {
+    return std::string();
+  }
+  if (mesh == nullptr) {
+    return Status(Status::DRACO_ERROR,
+                  "-uv_pred applies to meshes, not to point clouds.");
+  }
+  if (att_id < 0 || att_id >= mesh->num_attributes() ||
+      mesh->attribute(att_id)->attribute_type() !=
+          GeometryAttribute::TEX_COORD) {
+    return Status(Status::DRACO_ERROR,
+                  "-uv_pred: attribute " + std::to_string(att_id) +
+                      " is not a TEX_COORD attribute of the mesh.");
+  }
+  DRACO_RETURN_IF_ERROR(CheckCommonSettings(*encoder, att_id));
+  if (options.prediction == UvPrediction::kAuto) {
+    return ChooseSmallestFor(*mesh, att_id, encoder);
+  }
+  const PredictionSchemeMethod method = UvPredictionMethod(options.prediction);
+  DRACO_RETURN_IF_ERROR(CheckSettingsFor(method, *mesh, *encoder, att_id));
+  DRACO_RETURN_IF_ERROR(encoder->SetAttributePredictionScheme(att_id, method));
+  if (IsUvLaplacian(options.prediction)) {
+    DRACO_RETURN_IF_ERROR(ConfigureUvLaplacian(
+        options.prediction, options.anchors, *mesh, att_id, encoder));
+  }
+  return "UV prediction: " + AttributeLabel(*mesh, att_id) + " -> " +
+         UvPredictionNameOf(options.prediction) + "\n";
+}
+
 StatusOr<std::string> ConfigureUvPrediction(
     const UvCompressionOptions &options, const Mesh *mesh,
     ExpertEncoder *encoder) {
@@ -199,24 +231,12 @@ StatusOr<std::string> ConfigureUvPrediction(
     return Status(Status::DRACO_ERROR,
                   "-uv_pred applies to meshes, not to point clouds.");
   }
-  const PredictionSchemeMethod method = UvPredictionMethod(options.prediction);
   std::string summary;
   for (const int att_id : TexCoordAttributeIds(*mesh)) {
-    DRACO_RETURN_IF_ERROR(CheckCommonSettings(*encoder, att_id));
-    if (options.prediction == UvPrediction::kAuto) {
-      DRACO_ASSIGN_OR_RETURN(const std::string line,
-                             ChooseSmallestFor(*mesh, att_id, encoder));
-      summary += line;
-      continue;
-    }
-    DRACO_RETURN_IF_ERROR(CheckSettingsFor(method, *mesh, *encoder, att_id));
-    DRACO_RETURN_IF_ERROR(encoder->SetAttributePredictionScheme(att_id, method));
-    if (IsUvLaplacian(options.prediction)) {
-      DRACO_RETURN_IF_ERROR(ConfigureUvLaplacian(
-          options.prediction, options.anchors, *mesh, att_id, encoder));
-    }
-    summary += "UV prediction: " + AttributeLabel(*mesh, att_id) + " -> " +
-               UvPredictionNameOf(options.prediction) + "\n";
+    DRACO_ASSIGN_OR_RETURN(
+        const std::string line,
+        ConfigureUvPredictionOf(options, mesh, att_id, encoder));
+    summary += line;
   }
   return summary;
 }

@@ -43,6 +43,12 @@ StatusOr<std::string> ConfigureUvPrediction(
     const UvCompressionOptions &options, const Mesh *mesh,
     ExpertEncoder *encoder);
 
+// The same for the one TEX_COORD attribute |att_id| of |mesh| (an error for
+// any other attribute), leaving the others untouched.
+StatusOr<std::string> ConfigureUvPredictionOf(
+    const UvCompressionOptions &options, const Mesh *mesh, int att_id,
+    ExpertEncoder *encoder);
+
 }  // namespace draco
 
 #endif  // DRACO_EXT_OPTIONS_UV_PREDICTION_OPTIONS_H_

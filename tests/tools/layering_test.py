@@ -15,8 +15,9 @@
 """Checks that draco_ext/'s folders depend on each other in one direction.
 
   tools -> eval -> gltf -> options -> schemes (weighted, laplacian, seams)
-  -> linalg -> common, with hooks/ (what Draco's patched sources include)
-  above the schemes and below nothing of ours.
+  -> linalg -> common, and web -> options (the JS encoder API), with hooks/
+  (what Draco's patched sources include) above the schemes and web/ and
+  below nothing of ours.
 
 Also: only laplacian/ and linalg/ include Eigen, and options/ includes no
 Laplacian header but the light uv_laplacian_settings.h, so that a
@@ -36,7 +37,9 @@ ALLOWED = {
     'laplacian': {'common', 'linalg'},
     'options': {'common', 'weighted', 'seams', 'laplacian'},
     'gltf': {'common', 'options'},
-    'hooks': {'common', 'weighted', 'seams', 'laplacian', 'options', 'gltf'},
+    'web': {'common', 'options'},
+    'hooks': {'common', 'weighted', 'seams', 'laplacian', 'options', 'gltf',
+              'web'},
     'eval': {'common', 'weighted', 'seams', 'laplacian', 'linalg', 'options',
              'gltf'},
     'tools': {'common', 'options', 'eval'},
