@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
@@ -176,6 +177,44 @@ TEST_F(UvConfigureTest, RejectsPointCloudsAndSequentialEncoding) {
               std::string::npos)
         << sequential.status().error_msg_string();
   }
+}
+
+// The per-attribute form: each listed TEX_COORD attribute gets its own
+// prediction, the others stay stock; seams are per mesh.
+TEST_F(UvConfigureTest, PerAttributeFormConfiguresTheListedAttributes) {
+  const std::unique_ptr<ExpertEncoder> untouched = MakeEncoder();
+  const std::unique_ptr<ExpertEncoder> empty = MakeEncoder();
+  ASSERT_TRUE(ConfigureUvCompression(std::map<int, UvCompressionOptions>(),
+                                     mesh_.get(), empty.get())
+                  .ok());
+  EXPECT_EQ(Encode(untouched.get()), Encode(empty.get()));
+
+  // The same as the all-attributes form on a mesh with one TEX_COORD.
+  const UvCompressionOptions options = UvOptions("weighted+context");
+  const std::unique_ptr<ExpertEncoder> all = MakeEncoder();
+  const std::unique_ptr<ExpertEncoder> listed = MakeEncoder();
+  const auto all_summary =
+      ConfigureUvCompression(options, mesh_.get(), all.get());
+  const auto listed_summary = ConfigureUvCompression(
+      std::map<int, UvCompressionOptions>{{tex_coord_, options}}, mesh_.get(),
+      listed.get());
+  ASSERT_TRUE(all_summary.ok() && listed_summary.ok());
+  EXPECT_EQ(all_summary.value(), listed_summary.value());
+  EXPECT_EQ(Encode(all.get()), Encode(listed.get()));
+
+  // Any other attribute is an error, and so are inconsistent options.
+  const int pos = mesh_->GetNamedAttributeId(GeometryAttribute::POSITION);
+  const std::unique_ptr<ExpertEncoder> encoder = MakeEncoder();
+  EXPECT_FALSE(ConfigureUvCompression(
+                   std::map<int, UvCompressionOptions>{{pos, options}},
+                   mesh_.get(), encoder.get())
+                   .ok());
+  EXPECT_FALSE(ConfigureUvCompression(
+                   std::map<int, UvCompressionOptions>{
+                       {tex_coord_, UvOptions("weighted", "50")}},
+                   mesh_.get(), encoder.get())
+                   .ok());
+  EXPECT_EQ(PredictionScheme(*encoder), PREDICTION_UNDEFINED);
 }
 
 }  // namespace
