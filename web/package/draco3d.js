@@ -1,7 +1,10 @@
 /**
  * @fileoverview Main file of the draco3d-uv package: npm draco3d's entry
  * points, createDecoderModule and createEncoderModule, for Draco 1.5.5 with
- * draco-uv's texture coordinate coders (same JS API as draco3d's).
+ * draco-uv's texture coordinate coders (same JS API as draco3d's), plus
+ * createUvOptions and createEncoderModule's texCoordCompression option, which
+ * choose those coders by draco_encoder's flag names (README.md, "Encoding
+ * with draco-uv's coders").
  *
  * The glue of the emscripten that builds this package (Debian's 3.1.6)
  * would fetch() its .wasm by file path under Node.js 18 and newer, which
@@ -28,12 +31,79 @@ function createModuleFactory(wrapper, wasmFile) {
   };
 }
 
+/**
+ * A DracoUvOptions of |encoderModule| for the settings {prediction, seams,
+ * anchors} (draco_encoder's -uv_pred, -uv_seams and -uv_anchors values; an
+ * absent or empty one keeps Draco's own). The caller destroys it with
+ * encoderModule.destroy(). Throws an Error naming the valid values when a
+ * value is unknown.
+ */
+function createUvOptions(encoderModule, settings) {
+  const options = new encoderModule.DracoUvOptions();
+  const setters = [
+    ['prediction', 'SetPrediction'],
+    ['seams', 'SetSeams'],
+    ['anchors', 'SetAnchors'],
+  ];
+  for (const [key, setter] of setters) {
+    const value = settings && settings[key];
+    if (value === undefined || value === null || value === '') {
+      continue;
+    }
+    if (!options[setter](String(value))) {
+      const message = options.GetErrorMessage();
+      encoderModule.destroy(options);
+      throw new Error(`texCoordCompression.${key}: ${message}`);
+    }
+  }
+  return options;
+}
+
+/**
+ * Makes |settings| the module-wide default of |encoderModule|: every
+ * TEX_COORD attribute without a setting of its own is coded with them.
+ * Throws an Error for unknown or inconsistent values.
+ */
+function setUvDefault(encoderModule, settings) {
+  const options = createUvOptions(encoderModule, settings);
+  const uvModule = new encoderModule.DracoUvModule();
+  const ok = uvModule.SetDefault(options);
+  const message = uvModule.GetErrorMessage();
+  encoderModule.destroy(uvModule);
+  encoderModule.destroy(options);
+  if (!ok) {
+    throw new Error(`texCoordCompression: ${message}`);
+  }
+}
+
 const createDecoderModule =
     createModuleFactory('./draco_wasm_wrapper.js', 'draco_decoder.wasm');
-const createEncoderModule =
+const createStockEncoderModule =
     createModuleFactory('./draco_encoder_wrapper.js', 'draco_encoder.wasm');
+
+/**
+ * draco3d's createEncoderModule. With options.texCoordCompression
+ * ({prediction, seams, anchors}), the module's default coding of texture
+ * coordinates is set before the promise resolves; the promise is rejected
+ * with an Error naming the valid values when a value is unknown.
+ */
+function createEncoderModule(options) {
+  const moduleOptions = Object.assign({}, options);
+  const texCoordCompression = moduleOptions.texCoordCompression;
+  delete moduleOptions.texCoordCompression;
+  const ready = createStockEncoderModule(moduleOptions);
+  if (texCoordCompression === undefined) {
+    return ready;
+  }
+  return ready.then((encoderModule) => {
+    setUvDefault(encoderModule, texCoordCompression);
+    return encoderModule;
+  });
+}
 
 module.exports = {
   createEncoderModule,
   createDecoderModule,
+  createUvOptions,
+  setUvDefault,
 };
