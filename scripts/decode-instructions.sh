@@ -13,7 +13,7 @@
 # runs on CPU 0 with draco-uv's thread cap at 1. PROFILES, when given, keeps
 # callgrind's profile of every decode there (callgrind_annotate --inclusive=yes
 # reads them). Prints the raw table of draco_uv_decode_bench, then the
-# summary of scripts/decode_speed_table.py. About 15 minutes for the corpus.
+# summary of scripts/decode_speed_table.py. About 7 minutes for the corpus.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
