@@ -78,34 +78,6 @@ function loadPrivate(filename, packageDir, overrides, cache) {
   return mod.exports;
 }
 
-/**
- * Makes |encoderModule|'s module-wide texture coordinate coding
- * |texCoordCompression| ({prediction, seams, anchors}), or stock Draco's
- * when it is undefined. Throws with the encoder's message on unknown names.
- */
-function setTexCoordDefault(encoderModule, uvModule, texCoordCompression) {
-  if (!texCoordCompression) {
-    uvModule.ClearDefault();
-    return;
-  }
-  const uvOptions = new encoderModule.DracoUvOptions();
-  try {
-    const {prediction, seams, anchors} = texCoordCompression;
-    const ok = (prediction === undefined ||
-                uvOptions.SetPrediction(prediction)) &&
-        (seams === undefined || uvOptions.SetSeams(seams)) &&
-        (anchors === undefined || uvOptions.SetAnchors(String(anchors)));
-    if (!ok) {
-      throw new Error('draco3d-uv: ' + uvOptions.GetErrorMessage());
-    }
-    if (!uvModule.SetDefault(uvOptions)) {
-      throw new Error('draco3d-uv: ' + uvModule.GetErrorMessage());
-    }
-  } finally {
-    encoderModule.destroy(uvOptions);
-  }
-}
-
 function addMarker(gltf) {
   for (const key of ['extensionsUsed', 'extensionsRequired']) {
     gltf[key] = gltf[key] || [];
@@ -126,8 +98,12 @@ function wrapDracoStage(compressDracoMeshes) {
     }
     const uvModule = new encoderModule.DracoUvModule();
     try {
-      setTexCoordDefault(encoderModule, uvModule,
-                         (options.dracoOptions || {}).texCoordCompression);
+      const {texCoordCompression} = options.dracoOptions || {};
+      if (texCoordCompression) {
+        draco3d.setUvDefault(encoderModule, texCoordCompression);
+      } else {
+        uvModule.ClearDefault();
+      }
       const before = uvModule.GetNumEncodesWithDracoUvIds();
       const result = await compressDracoMeshes(gltf, options);
       if (uvModule.GetNumEncodesWithDracoUvIds() > before) {

@@ -53,10 +53,6 @@ export function countDracoUvEncodes(encoderModule) {
   return uvModule.GetNumEncodesWithDracoUvIds();
 }
 
-function without(names, name) {
-  return (names || []).filter((entry) => entry !== name);
-}
-
 /**
  * DRACOUV_texcoord_compression: marks files whose Draco buffers use
  * draco-uv's coders. Register it next to KHRDracoMeshCompression.
@@ -88,14 +84,12 @@ export class DracoUvTexcoordCompression extends Extension {
   /** @hidden */
   write(context) {
     const json = context.jsonDoc.json;
+    const name = this.extensionName;
     const used =
         countDracoUvEncodes(this._encoderModule) > this._encodesBefore;
-    json.extensionsUsed = without(json.extensionsUsed, this.extensionName);
-    json.extensionsRequired =
-        without(json.extensionsRequired, this.extensionName);
-    if (used) {
-      json.extensionsUsed.push(this.extensionName);
-      json.extensionsRequired.push(this.extensionName);
+    for (const key of ['extensionsUsed', 'extensionsRequired']) {
+      const names = (json[key] || []).filter((entry) => entry !== name);
+      json[key] = used ? [...names, name].sort() : names;
     }
     return this;
   }
