@@ -19,6 +19,8 @@
  * keeps the CLI's other extensions and dependencies (meshopt, ...): it only
  * adds to the CLI's I/O (onProgramReady).
  */
+'use strict';
+
 import {registerDracoUv} from './gltf-transform.mjs';
 
 function texCoordCompressionFromEnv(env) {

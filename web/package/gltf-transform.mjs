@@ -24,6 +24,8 @@
  * helper, call document.createExtension(DracoUvTexcoordCompression) before
  * io.write().
  */
+'use strict';
+
 import {Extension} from '@gltf-transform/core';
 import {KHRDracoMeshCompression} from '@gltf-transform/extensions';
 import draco3d from './draco3d.js';
