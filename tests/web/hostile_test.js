@@ -64,7 +64,7 @@ const {Worker, isMainThread, parentPort, workerData} =
     require('worker_threads');
 
 // The decoder's memory cap as CMakeLists.txt sets it (-sMAXIMUM_MEMORY).
-const kDocumentedCapBytes = 1024 * 1024 * 1024;
+const kDocumentedCapBytes = 2 * 1024 * 1024 * 1024;
 // Variants are corrupted copies of files of at most a few KB: their decodes
 // stay far below the cap. 64 MB is four times emscripten's initial memory.
 const kMaxHeapBytes = 64 * 1024 * 1024;
