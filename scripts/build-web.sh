@@ -8,7 +8,8 @@
 #   scripts/build-web.sh [--stock] [--no-check] [OUT]      (OUT: build-web)
 #
 # Builds (Release, Draco's release flags: -O3, -sWASM=1, Draco's -s
-# settings, and -flto; no pthreads):
+# settings, and -flto; memory growth capped at 2 GB by our CMakeLists.txt;
+# no pthreads):
 #   OUT/uv/        draco_decoder (.wasm + glue), its asm.js fallback
 #                  (draco_decoder_asmjs: the same objects linked with
 #                  -sWASM=0), draco_encoder (.wasm + glue)
@@ -24,7 +25,9 @@
 #
 # Needs emscripten, python3-ply, nodejs, cmake, ninja-build, libeigen3-dev
 # and (for minified glue; without it the glue is copied as emscripten wrote
-# it) terser: ./draco-uv.sh web installs them. Each build folder is
+# it) terser: ./draco-uv.sh web and ./draco-uv.sh test install them (test
+# runs this script with --no-check before CTest, which runs the golden
+# checks as web.golden_*). Each build folder is
 # configured once (again when this script's CMake arguments change); later
 # runs rebuild what changed. A CMake run regenerates Draco's IDL glue, on
 # which every object depends, and so recompiles the whole target.
