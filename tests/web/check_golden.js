@@ -31,7 +31,11 @@
 // and its digests (quantized, and dequantized as draco_uv_digest
 // --dequantized prints it) are printed for comparisons by hand.
 //
-//   node tests/web/check_golden.js MODULE.js [GOLDEN_DIR]
+//   node tests/web/check_golden.js [--without-laplacian] MODULE.js [GOLDEN_DIR]
+//
+// --without-laplacian is for a decoder built without the Laplacian coder
+// (the package's lite/ decoder): there every lossy file must fail with a
+// decoder error instead of decoding.
 //
 // MODULE.js is a decoder module that defines DracoDecoderModule, e.g.
 // build-web/draco3d-uv/draco_wasm_wrapper.js (its .wasm is read from
@@ -80,6 +84,10 @@ async function loadDecoder(modulePath) {
   return factory(options);
 }
 
+// The decoder's own error status (as opposed to a failure of this script or
+// a trap in the module).
+class DecodeError extends Error {}
+
 // Returns the digest line of the mesh in |data| or throws with the
 // decoder's error message. |dequantized|: with Draco's attribute transforms
 // (draco_uv_digest --dequantized), i.e. the values a normal decode returns.
@@ -92,7 +100,7 @@ function digest(draco, data, dequantized = false) {
       if (!dequantized) decoder.SkipAttributeTransform(type);
     }
     const status = decoder.DecodeArrayToMesh(data, data.byteLength, mesh);
-    if (!status.ok()) throw new Error(status.error_msg());
+    if (!status.ok()) throw new DecodeError(status.error_msg());
     const numFaces = mesh.num_faces();
     const numPoints = mesh.num_points();
     const indexBytes = numFaces * 3 * 4;
@@ -139,9 +147,13 @@ function digest(draco, data, dequantized = false) {
 }
 
 async function main() {
-  const [modulePath, goldenArg] = process.argv.slice(2);
+  const args = process.argv.slice(2);
+  const withoutLaplacian = args[0] === '--without-laplacian';
+  const [modulePath, goldenArg] = withoutLaplacian ? args.slice(1) : args;
   if (!modulePath) {
-    console.error('usage: node check_golden.js MODULE.js [GOLDEN_DIR]');
+    console.error(
+        'usage: node check_golden.js [--without-laplacian] MODULE.js ' +
+        '[GOLDEN_DIR]');
     process.exit(2);
   }
   const goldenDir = goldenArg ||
@@ -167,20 +179,27 @@ async function main() {
       console.log(`FAIL ${file}\n  expected ${want}\n  decoded  ${got}`);
     }
   }
-  // Lossy files: decoding must succeed; the values are not pinned.
+  // Lossy files: decoding must succeed (the values are not pinned), or,
+  // without the Laplacian coder, fail with an error.
   const lossyDir = path.join(goldenDir, 'lossy');
   const lossy = fs.existsSync(lossyDir) ?
       fs.readdirSync(lossyDir).filter((f) => f.endsWith('.drc')).sort() : [];
   for (const file of lossy) {
+    let line;
+    let error;
     try {
       const data = fs.readFileSync(path.join(lossyDir, file));
-      const line = digest(draco, data) + '\tdequantized: ' +
+      line = digest(draco, data) + '\tdequantized: ' +
           digest(draco, data, true);
+    } catch (e) {
+      error = e;
+    }
+    if (withoutLaplacian ? error instanceof DecodeError : !error) {
       ++passed;
-      console.log(`ok lossy/${file}\t${line}`);
-    } catch (error) {
+      console.log(`ok lossy/${file}\t${error ? error.message : line}`);
+    } else {
       ++failed;
-      console.log(`FAIL lossy/${file}: ${error.message}`);
+      console.log(`FAIL lossy/${file}: ${error ? error.message : 'decoded'}`);
     }
   }
   console.log(`golden: ${passed} passed, ${failed} failed`);
