@@ -34,7 +34,9 @@
  *  - without the package's GLTFLoader plugin (three-plugin.mjs) GLTFLoader
  *    warns 'Unknown extension "DRACOUV_texcoord_compression"', with it not.
  * Once: the package's gltf/ decoder and its asm.js fallback
- * (setDecoderConfig({type: 'js'})) give the reference's pixels.
+ * (setDecoderConfig({type: 'js'})) give the reference's pixels; its lite/
+ * decoder (no Laplacian coder) gives them on a lossless GLB and fails with a
+ * decoding error on the Laplacian one.
  *
  *   node tests/web/three_browser_test.mjs
  *
@@ -181,6 +183,7 @@ const kDecoders = {
   ours: {decoderPath: '/pkg/'},
   oursGltf: {decoderPath: '/pkg/gltf/'},
   oursAsmjs: {decoderPath: '/pkg/', asmjs: true},
+  oursLite: {decoderPath: '/pkg/lite/'},
 };
 
 /**
@@ -261,6 +264,13 @@ async function checkAsset(page, glbs, once) {
            `${marked.name} with the package's gltf/ decoder`);
     t.same(await t.load(marked, 'oursAsmjs'),
            `${marked.name} with the package's asm.js decoder`);
+    t.same(await t.load(marked, 'oursLite'),
+           `${marked.name} with the package's lite/ decoder`);
+    const lossy = glbs.find((g) => g.kind === 'lossy');
+    const lite = await t.load(lossy, 'oursLite');
+    check(/Decoding failed: \S/.test(lite.error || ''),
+          `${lossy.name} with the package's lite/ decoder: ` +
+          (lite.error || 'loaded without an error'));
   }
 }
 
@@ -296,7 +306,8 @@ function prerequisites() {
   }
   const packageDir = path.resolve(env('DRACO_UV_WEB_PACKAGE'));
   for (const file of ['draco_wasm_wrapper.js', 'three-plugin.mjs',
-                      'gltf/draco_wasm_wrapper.js', 'draco_decoder.js']) {
+                      'gltf/draco_wasm_wrapper.js', 'draco_decoder.js',
+                      'lite/draco_wasm_wrapper.js']) {
     if (!fs.existsSync(path.join(packageDir, file))) {
       console.error(`three_browser_test: ${packageDir} has no ${file} ` +
                     '(./draco-uv.sh web builds the package)');
