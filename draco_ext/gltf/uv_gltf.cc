@@ -14,15 +14,17 @@
 //
 #include "draco_ext/gltf/uv_gltf.h"
 
-#ifdef DRACO_TRANSCODER_SUPPORTED
 #include <utility>
 #include <vector>
 
-#include "draco/compression/draco_compression_options.h"
 #include "draco/core/encoder_buffer.h"
 #include "draco_ext/common/uv_prediction_ids.h"
-#include "draco_ext/options/uv_configure.h"
 #include "draco_ext/options/uv_seam_options.h"
+
+#ifdef DRACO_TRANSCODER_SUPPORTED
+#include "draco/compression/draco_compression_options.h"
+#include "draco_ext/options/uv_configure.h"
+#endif
 
 namespace draco {
 
@@ -43,24 +45,20 @@ bool UsesDracoUvScheme(const Mesh &mesh, const ExpertEncoder &encoder) {
 
 namespace {
 
-// What naming kUvGltfExtension in extensionsUsed and extensionsRequired adds
-// to the JSON that Draco's glTF writer emits: twice the quoted name, a comma
-// and the writer's indentation (76 bytes measured on sphere.gltf), rounded up
-// for GLB's 4-byte padding.
-constexpr size_t kUvGltfExtensionJsonBytes = 80;
-
 StatusOr<size_t> EncodedSize(ExpertEncoder *encoder) {
   EncoderBuffer buffer;
   DRACO_RETURN_IF_ERROR(encoder->EncodeToBuffer(&buffer));
   return buffer.size();
 }
 
-// -uv_pred auto on the first primitive that would need the extension: keeps
-// draco-uv's schemes only if they save more than the extension costs, so that
-// auto never makes a file bigger than stock coding does. Later primitives of
-// the file ride on the extension for free.
+}  // namespace
+
 Status KeepDracoUvOnlyIfItPaysForTheExtension(const Mesh &mesh,
                                               ExpertEncoder *encoder) {
+  if (GetUvSeamCoding(encoder->options()) != UvSeamCoding::kDraco ||
+      !UsesDracoUvScheme(mesh, *encoder)) {
+    return OkStatus();
+  }
   DRACO_ASSIGN_OR_RETURN(const size_t chosen_size, EncodedSize(encoder));
   std::vector<std::pair<int, int>> chosen_methods;
   for (int i = 0; i < mesh.NumNamedAttributes(GeometryAttribute::TEX_COORD);
@@ -78,12 +76,13 @@ Status KeepDracoUvOnlyIfItPaysForTheExtension(const Mesh &mesh,
     return OkStatus();
   }
   for (const auto &[att_id, method] : chosen_methods) {
-    DRACO_RETURN_IF_ERROR(encoder->SetAttributePredictionScheme(att_id, method));
+    DRACO_RETURN_IF_ERROR(
+        encoder->SetAttributePredictionScheme(att_id, method));
   }
   return OkStatus();
 }
 
-}  // namespace
+#ifdef DRACO_TRANSCODER_SUPPORTED
 
 Status ConfigureUvCompressionForGltf(
     const Mesh &mesh, ExpertEncoder &encoder,
@@ -95,16 +94,13 @@ Status ConfigureUvCompressionForGltf(
   // are for command-line tools; a library stays quiet.
   DRACO_RETURN_IF_ERROR(
       ConfigureUvCompression(options, &mesh, &encoder).status());
-  const bool context_seams =
-      GetUvSeamCoding(encoder.options()) != UvSeamCoding::kDraco;
-  // With context seams the primitive needs the extension anyway.
-  if (options.prediction == UvPrediction::kAuto && !context_seams &&
-      extensions_required->count(kUvGltfExtension) == 0 &&
-      UsesDracoUvScheme(mesh, encoder)) {
+  if (options.prediction == UvPrediction::kAuto &&
+      extensions_required->count(kUvGltfExtension) == 0) {
     DRACO_RETURN_IF_ERROR(
         KeepDracoUvOnlyIfItPaysForTheExtension(mesh, &encoder));
   }
-  if (UsesDracoUvScheme(mesh, encoder) || context_seams) {
+  if (UsesDracoUvScheme(mesh, encoder) ||
+      GetUvSeamCoding(encoder.options()) != UvSeamCoding::kDraco) {
     extensions_used->insert(kUvGltfExtension);
     extensions_required->insert(kUvGltfExtension);
   }
@@ -122,6 +118,6 @@ Status ConfigureUvCompressionForGltf(
                                        extensions_required);
 }
 
-}  // namespace draco
-
 #endif  // DRACO_TRANSCODER_SUPPORTED
+
+}  // namespace draco

@@ -14,23 +14,42 @@
 //
 // draco-uv in glTF files: the texture coordinate coders of each
 // KHR_draco_mesh_compression primitive, and the glTF extension
-// (uv_gltf_extension.h) that marks files using them.
+// (uv_gltf_extension.h) that marks files using them. The rule that -uv_pred
+// auto pays for the extension is shared with the JS encoder's glTF writes
+// (web/uv_web_encoder.h), which build without Draco's transcoder.
 #ifndef DRACO_EXT_GLTF_UV_GLTF_H_
 #define DRACO_EXT_GLTF_UV_GLTF_H_
 
-#include "draco/draco_features.h"
-
-#ifdef DRACO_TRANSCODER_SUPPORTED
 #include <memory>
 #include <set>
 #include <string>
 
 #include "draco/compression/expert_encode.h"
 #include "draco/core/status.h"
+#include "draco/draco_features.h"
 #include "draco/mesh/mesh.h"
 #include "draco_ext/gltf/uv_gltf_extension.h"
 
 namespace draco {
+
+// True when |encoder| is set to code a TEX_COORD attribute of |mesh| with a
+// draco-uv scheme, i.e. when its output needs a decoder with draco-uv.
+bool UsesDracoUvScheme(const Mesh &mesh, const ExpertEncoder &encoder);
+
+// -uv_pred auto on a primitive of a glTF file that does not list
+// kUvGltfExtension yet, with |encoder| configured for |mesh| by
+// ConfigureUvCompression(): when |encoder| would write draco-uv prediction
+// ids with stock seams, keeps them only if they save more bytes than naming
+// the extension adds to the file (kUvGltfExtensionJsonBytes), else sets every
+// TEX_COORD attribute back to Draco's own prediction, so that auto never
+// makes a file bigger than stock coding. With context seams the primitive
+// needs the extension anyway and |encoder| is left as it is. Once a
+// primitive keeps draco-uv ids, later primitives of the file ride on the
+// extension for free (the caller stops asking).
+Status KeepDracoUvOnlyIfItPaysForTheExtension(const Mesh &mesh,
+                                              ExpertEncoder *encoder);
+
+#ifdef DRACO_TRANSCODER_SUPPORTED
 
 // Applies the UvCompressionOptions of |mesh| (mesh.GetCompressionOptions()
 // .uv) to |encoder|, which encodes |mesh|, the copy of a glTF primitive in
@@ -40,10 +59,9 @@ namespace draco {
 // attribute ends up with a draco-uv scheme or the seams with draco-uv's
 // coding (-uv_seams context, which applies to every primitive with an
 // attribute besides positions), adds kUvGltfExtension to |extensions_used|
-// and |extensions_required|. With -uv_pred auto and stock seams, the first
-// primitive that would need the extension keeps draco-uv's schemes only if
-// they save more bytes than the extension adds to the JSON, so auto never
-// makes a file bigger than stock coding. Stock options change nothing.
+// and |extensions_required|. With -uv_pred auto, primitives coded while the
+// extension is not yet required go through
+// KeepDracoUvOnlyIfItPaysForTheExtension(). Stock options change nothing.
 //
 // Draco 1.5.5 holds the encoder by value and 1.5.7 and newer in a
 // unique_ptr; one overload each keeps the hook's text the same in both.
@@ -56,11 +74,8 @@ Status ConfigureUvCompressionForGltf(
     std::set<std::string> *extensions_used,
     std::set<std::string> *extensions_required);
 
-// True when |encoder| is set to code a TEX_COORD attribute of |mesh| with a
-// draco-uv scheme, i.e. when its output needs a decoder with draco-uv.
-bool UsesDracoUvScheme(const Mesh &mesh, const ExpertEncoder &encoder);
+#endif  // DRACO_TRANSCODER_SUPPORTED
 
 }  // namespace draco
 
-#endif  // DRACO_TRANSCODER_SUPPORTED
 #endif  // DRACO_EXT_GLTF_UV_GLTF_H_

@@ -17,7 +17,7 @@
 #include <memory>
 
 #include "draco/compression/config/compression_shared.h"
-#include "draco_ext/common/uv_prediction_ids.h"
+#include "draco_ext/gltf/uv_gltf.h"
 #include "draco_ext/options/uv_configure.h"
 #include "draco_ext/options/uv_seam_options.h"
 
@@ -41,19 +41,24 @@ bool WroteDracoUvIds(const Mesh &mesh, const ExpertEncoder &encoder,
       out.data()[kHeaderEncoderMethodOffset] != MESH_EDGEBREAKER_ENCODING) {
     return false;
   }
-  if (GetUvSeamCoding(encoder.options()) != UvSeamCoding::kDraco) {
-    return true;
-  }
-  for (int i = 0; i < mesh.NumNamedAttributes(GeometryAttribute::TEX_COORD);
-       ++i) {
-    const int att_id =
-        mesh.GetNamedAttributeId(GeometryAttribute::TEX_COORD, i);
-    if (IsDracoUvPredictionMethod(encoder.options().GetAttributeInt(
-            att_id, "prediction_scheme", PREDICTION_UNDEFINED))) {
-      return true;
+  return GetUvSeamCoding(encoder.options()) != UvSeamCoding::kDraco ||
+         UsesDracoUvScheme(mesh, encoder);
+}
+
+// True when every attribute's options leave the choice to -uv_pred auto (or
+// keep Draco's own prediction) and one asks for auto: the case in which the
+// glTF encoder may fall back to stock coding.
+bool OnlyAutoChooses(const std::map<int, UvCompressionOptions> &options) {
+  bool any_auto = false;
+  for (const auto &entry : options) {
+    const UvPrediction prediction = entry.second.prediction;
+    if (prediction != UvPrediction::kAuto &&
+        prediction != UvPrediction::kDraco) {
+      return false;
     }
+    any_auto = any_auto || prediction == UvPrediction::kAuto;
   }
-  return false;
+  return any_auto;
 }
 
 }  // namespace
@@ -105,6 +110,13 @@ bool DracoUvOptions::SetAnchors(const char *spec) {
 UvWebModuleState &UvWebModuleState::Instance() {
   static UvWebModuleState *const state = new UvWebModuleState();
   return *state;
+}
+
+void UvWebModuleState::CountEncodeWithDracoUvIds() {
+  ++num_encodes_with_draco_uv_ids_;
+  if (gltf_write_ == GltfWrite::kExtensionNotYetPaid) {
+    gltf_write_ = GltfWrite::kExtensionPaid;
+  }
 }
 
 Status UvWebModuleState::SetDefault(const UvCompressionOptions &options) {
@@ -205,16 +217,32 @@ Status UvWebEncoder::EncodeConfigured(const Mesh &mesh,
                                       EncoderBuffer *out) {
   ExpertEncoder encoder(mesh);
   encoder.Reset(options);
+  const std::map<int, UvCompressionOptions> per_attribute = OptionsFor(mesh);
   const StatusOr<std::string> summary =
-      ConfigureUvCompression(OptionsFor(mesh), &mesh, &encoder);
+      ConfigureUvCompression(per_attribute, &mesh, &encoder);
   if (!summary.ok()) {
     return Finish(summary.status(), false, "");
+  }
+  std::string chosen = summary.value();
+  if (module_->gltf_extension_not_yet_paid() &&
+      OnlyAutoChooses(per_attribute) && UsesDracoUvScheme(mesh, encoder)) {
+    const Status status =
+        KeepDracoUvOnlyIfItPaysForTheExtension(mesh, &encoder);
+    if (!status.ok()) {
+      return Finish(status, false, "");
+    }
+    if (!UsesDracoUvScheme(mesh, encoder)) {
+      chosen += std::string(
+                    "UV prediction (auto): draco for every TEX_COORD "
+                    "attribute (draco-uv's saving does not pay for ") +
+                kUvGltfExtension + ")\n";
+    }
   }
   const Status status = encoder.EncodeToBuffer(out);
   num_encoded_points_ = encoder.num_encoded_points();
   num_encoded_faces_ = encoder.num_encoded_faces();
   return Finish(status, status.ok() && WroteDracoUvIds(mesh, encoder, *out),
-                summary.value());
+                chosen);
 }
 
 Status UvWebEncoder::EncodeMesh(const Mesh &mesh, Encoder *encoder,

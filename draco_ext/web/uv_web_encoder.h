@@ -17,8 +17,10 @@
 //   DracoUvOptions  one TEX_COORD attribute's coding, by draco_encoder's
 //                   flag names (-uv_pred, -uv_seams, -uv_anchors);
 //   DracoUvModule   the module-wide default for every TEX_COORD attribute
-//                   without a setting of its own, and a count of the encodes
-//                   that wrote draco-uv ids;
+//                   without a setting of its own, a count of the encodes
+//                   that wrote draco-uv ids, and the glTF writes under way
+//                   (in which -uv_pred auto pays for the glTF extension as
+//                   in the native glTF encoder, gltf/uv_gltf.h);
 //   UvWebEncoder    the part of the JS Encoder and ExpertEncoder that holds
 //                   their per-attribute settings and encodes: stock Draco's
 //                   own path when no setting applies (byte-identical
@@ -86,11 +88,28 @@ class UvWebModuleState {
   int num_encodes_with_draco_uv_ids() const {
     return num_encodes_with_draco_uv_ids_;
   }
-  void CountEncodeWithDracoUvIds() { ++num_encodes_with_draco_uv_ids_; }
+  // Counts an encode that wrote draco-uv ids; in a glTF write, the file now
+  // carries the glTF extension.
+  void CountEncodeWithDracoUvIds();
+
+  // A glTF writer's encodes (KHR_draco_mesh_compression primitives of one
+  // file) begin: until one of them writes draco-uv ids, the file does not
+  // carry kUvGltfExtension, so -uv_pred auto keeps draco-uv's schemes only
+  // if they pay for it (KeepDracoUvOnlyIfItPaysForTheExtension()). A second
+  // Begin starts a new file.
+  void BeginGltfWrite() { gltf_write_ = GltfWrite::kExtensionNotYetPaid; }
+  void EndGltfWrite() { gltf_write_ = GltfWrite::kNone; }
+  // True in a glTF write whose encodes have not written draco-uv ids yet.
+  bool gltf_extension_not_yet_paid() const {
+    return gltf_write_ == GltfWrite::kExtensionNotYetPaid;
+  }
 
  private:
+  enum class GltfWrite { kNone, kExtensionNotYetPaid, kExtensionPaid };
+
   std::optional<UvCompressionOptions> default_;
   int num_encodes_with_draco_uv_ids_ = 0;
+  GltfWrite gltf_write_ = GltfWrite::kNone;
 };
 
 // IDL DracoUvModule: a handle on a UvWebModuleState, by default the
@@ -106,6 +125,9 @@ class DracoUvModule {
   long GetNumEncodesWithDracoUvIds() const {
     return state_->num_encodes_with_draco_uv_ids();
   }
+  // Around the encodes of one glTF or GLB file (UvWebModuleState).
+  void BeginGltfWrite() { state_->BeginGltfWrite(); }
+  void EndGltfWrite() { state_->EndGltfWrite(); }
   const char *GetErrorMessage() const { return error_.c_str(); }
 
  private:
@@ -152,7 +174,9 @@ class UvWebEncoder {
   // The options of each TEX_COORD attribute of |mesh| that has any: its
   // own, else the per-type ones, else the module default.
   std::map<int, UvCompressionOptions> OptionsFor(const Mesh &mesh) const;
-  // Configures a copy of |options| for |mesh| and encodes with it.
+  // Configures a copy of |options| for |mesh| and encodes with it; in a
+  // glTF write whose file does not carry the glTF extension yet, -uv_pred
+  // auto keeps draco-uv ids only if they pay for it.
   Status EncodeConfigured(const Mesh &mesh, const EncoderOptions &options,
                           EncoderBuffer *out);
   // Records the outcome of an encode and returns |status|.

@@ -15,7 +15,8 @@
 """Checks that draco_ext/'s folders depend on each other in one direction.
 
   tools -> eval -> gltf -> options -> schemes (weighted, laplacian, seams)
-  -> linalg -> common, and web -> options (the JS encoder API), with hooks/
+  -> linalg -> common, and web -> gltf (the JS encoder API, whose glTF
+  writes share the glTF encoder's rule for -uv_pred auto), with hooks/
   (what Draco's patched sources include) above the schemes and web/ and
   below nothing of ours.
 
@@ -37,7 +38,7 @@ ALLOWED = {
     'laplacian': {'common', 'linalg'},
     'options': {'common', 'weighted', 'seams', 'laplacian'},
     'gltf': {'common', 'options'},
-    'web': {'common', 'options'},
+    'web': {'common', 'options', 'gltf'},
     'hooks': {'common', 'weighted', 'seams', 'laplacian', 'options', 'gltf',
               'web'},
     'eval': {'common', 'weighted', 'seams', 'laplacian', 'linalg', 'options',
