@@ -39,7 +39,12 @@
  *     ids; every draco-uv setting is smaller than stock over all meshes;
  *   - unknown names and inconsistent options fail with a message listing
  *     the valid values, from the IDL, createUvOptions() and
- *     createEncoderModule(), which rejects.
+ *     createEncoderModule(), which rejects;
+ *   - in a glTF write (DracoUvModule.BeginGltfWrite/EndGltfWrite), auto's
+ *     first encode keeps draco-uv ids only if they save more than the
+ *     marker's 80 bytes, else writes the stock bytes (both happen over the
+ *     meshes); after an encode that kept them, later ones keep auto's
+ *     choice; after EndGltfWrite auto weighs Draco bytes only again.
  *
  *   node tests/web/encoder_api_test.js
  *
@@ -478,6 +483,7 @@ async function main() {
           `GetNumEncodesWithDracoUvIds ${uvModule.GetNumEncodesWithDracoUvIds()}` +
           `, expected ${expectedCount}`);
     await checkModuleDefault(draco, encoderModule, meshes, tmp, encoderPath);
+    await checkGltfWrite(draco, meshes);
   } finally {
     encoderModule.destroy(uvModule);
     fs.rmSync(tmp, {recursive: true, force: true});
@@ -525,6 +531,78 @@ async function checkModuleDefault(draco, _, meshes, tmp, encoderPath) {
     draco.setUvDefault(encoderModule, setting);
     console.log(`${base}: ${result.bytes.length} bytes, stock ` +
                 `${stockBytes.length}`);
+  }
+  encoderModule.destroy(uvModule);
+}
+
+// auto in glTF writes: the native glTF encoder's rule (draco_ext/gltf/
+// uv_gltf.h, KeepDracoUvOnlyIfItPaysForTheExtension) through WebAssembly.
+async function checkGltfWrite(draco, meshes) {
+  const kMarkerBytes = 80;  // kUvGltfExtensionJsonBytes
+  const encoderModule = await draco.createEncoderModule(
+      {texCoordCompression: {prediction: 'auto'}});
+  const uvModule = new encoderModule.DracoUvModule();
+  const stockOptions = draco.createUvOptions(encoderModule, {});
+  const encode = (prepared) => encodeWithEncoder(encoderModule, prepared,
+                                                 null);
+  // The meshes, and pieces of them (their first triangles), on some of
+  // which draco-uv saves less than the marker costs (crane_spot's first 600
+  // triangles: 61 bytes).
+  const pieces = [];
+  for (const file of meshes) {
+    const obj = readObj(file);
+    pieces.push({base: path.basename(file), obj});
+    for (const triangles of [150, 600].filter(
+        (t) => 3 * t < obj.corners.length)) {
+      const corners = obj.corners.slice(0, 3 * triangles);
+      pieces.push({base: `${path.basename(file)}[${triangles} triangles]`,
+                   obj: {...obj, corners}});
+    }
+  }
+  const cases = pieces.map(({base, obj}) => {
+    const prepared = prepareMesh(obj);
+    const auto = encode(prepared);
+    const stock = encodeWithEncoder(encoderModule, prepared,
+        (encoder) => encoder.SetAttributeUvCompression(
+            encoderModule.TEX_COORD, stockOptions));
+    return {base, prepared, auto, stock,
+            pays: auto.used &&
+                  auto.bytes.length + kMarkerBytes < stock.bytes.length};
+  });
+  encoderModule.destroy(stockOptions);
+  for (const c of cases) {
+    uvModule.BeginGltfWrite();
+    const first = encode(c.prepared);
+    uvModule.EndGltfWrite();
+    const dropsIds = c.auto.used && !c.pays;
+    check(first.bytes.equals(dropsIds ? c.stock.bytes : c.auto.bytes) &&
+          first.used === c.pays,
+          `${c.base} glTF write: ${first.bytes.length} bytes, auto ` +
+          `${c.auto.bytes.length}, stock ${c.stock.bytes.length}`);
+    check(!dropsIds || first.message.includes('DRACOUV_texcoord_compression'),
+          `${c.base} glTF write: message "${first.message}"`);
+    console.log(`${c.base} glTF write: ${first.bytes.length} bytes (auto ` +
+                `${c.auto.bytes.length}${c.auto.used ? ' with ids' : ''}, ` +
+                `stock ${c.stock.bytes.length})`);
+  }
+  const paying = cases.find((c) => c.pays);
+  const dropped = cases.filter((c) => c.auto.used && !c.pays);
+  check(paying && dropped.length > 0,
+        'glTF write: the meshes do not cover both outcomes');
+  if (paying) {
+    uvModule.BeginGltfWrite();
+    encode(paying.prepared);
+    for (const c of dropped) {
+      const later = encode(c.prepared);
+      check(later.bytes.equals(c.auto.bytes) && later.used,
+            `${c.base}: a later encode of the glTF write did not keep ` +
+            'auto\'s choice');
+    }
+    uvModule.EndGltfWrite();
+  }
+  for (const c of dropped) {
+    check(encode(c.prepared).bytes.equals(c.auto.bytes),
+          `${c.base}: after EndGltfWrite auto is not the plain auto`);
   }
   encoderModule.destroy(uvModule);
 }

@@ -44,19 +44,21 @@ export const ASSETS = [
 // The texture coordinate codings the tests write (all lossless). auto may
 // keep ids stock decoders know (Draco's own prediction, or its portable or
 // parallelogram prediction when smaller); the others write draco-uv's ids on
-// every mesh with texture seams.
+// every mesh with texture seams. auto with stock seams pays for the marker
+// (neverLarger): its files are never larger than stock coding's.
 export const UV_SETTINGS = [
-  {name: 'auto', texCoordCompression: {prediction: 'auto'}, forcesIds: false},
+  {name: 'auto', texCoordCompression: {prediction: 'auto'}, forcesIds: false,
+   neverLarger: true},
   {name: 'auto+context',
    texCoordCompression: {prediction: 'auto', seams: 'context'},
-   forcesIds: true},
+   forcesIds: true, neverLarger: false},
   {name: 'weighted_multi', texCoordCompression: {prediction: 'weighted_multi'},
-   forcesIds: true},
+   forcesIds: true, neverLarger: false},
 ];
 
-// Assets with large enough textured meshes that every draco-uv coding makes
-// their Draco buffers smaller (MultiUVTest's 96 vertices may grow with
-// weighted_multi).
+// Assets with large enough textured meshes that every draco-uv coding that
+// writes draco-uv ids makes their Draco buffers smaller (MultiUVTest's 96
+// vertices may grow with weighted_multi); auto may keep stock coding.
 export const LARGE_ASSETS = ['Lantern', 'CesiumMilkTruck', 'Fox'];
 
 export function skip(why) {
@@ -178,6 +180,20 @@ export function checkSmaller(glb, reference, marked) {
   check(bytes < referenceBytes && glb.length <= allowed,
         `${glb.length} bytes (Draco ${bytes}), stock coding's ` +
         `${reference.length} (Draco ${referenceBytes})`);
+}
+
+/**
+ * Checks that a file (bytes or a size) written with prediction 'auto' and
+ * stock seams is not larger than |reference| (the same asset with stock
+ * coding), and smaller when |marked|: auto keeps the marker only where
+ * draco-uv saves more than the marker costs.
+ */
+export function checkNotLarger(file, reference, marked) {
+  const [size, referenceSize] = [file, reference].map(
+      (f) => typeof f === 'number' ? f : f.length);
+  check(marked ? size < referenceSize : size <= referenceSize,
+        `auto: ${size} bytes${marked ? ', marked' : ''}, stock coding's ` +
+        `${referenceSize}`);
 }
 
 /**

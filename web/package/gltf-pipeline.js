@@ -16,7 +16,11 @@
  * Draco 1.5.5's). When some primitive was encoded with draco-uv's ids, the
  * glTF gets DRACOUV_texcoord_compression in extensionsUsed and
  * extensionsRequired (also with uncompressedFallback: loaders with a stock
- * Draco decoder would otherwise try the Draco data and fail).
+ * Draco decoder would otherwise try the Draco data and fail). The stage's
+ * encodes run between DracoUvModule.BeginGltfWrite() and EndGltfWrite(), so
+ * that with prediction 'auto' the first primitive that would need the marker
+ * keeps draco-uv's coding only if it saves more than the marker's JSON costs,
+ * as in draco-uv's native glTF encoder.
  *
  * How: gltf-pipeline hard-codes require("draco3d") and creates its modules
  * once. This file loads a private copy of gltf-pipeline's own files (the
@@ -105,12 +109,14 @@ function wrapDracoStage(compressDracoMeshes) {
         uvModule.ClearDefault();
       }
       const before = uvModule.GetNumEncodesWithDracoUvIds();
+      uvModule.BeginGltfWrite();
       const result = await compressDracoMeshes(gltf, options);
       if (uvModule.GetNumEncodesWithDracoUvIds() > before) {
         addMarker(gltf);
       }
       return result;
     } finally {
+      uvModule.EndGltfWrite();
       uvModule.ClearDefault();
       encoderModule.destroy(uvModule);
     }

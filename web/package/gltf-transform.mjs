@@ -17,7 +17,12 @@
  *    with draco-uv's ids (the encoder module's
  *    DracoUvModule.GetNumEncodesWithDracoUvIds() grew during the write), and
  *    removes itself otherwise: a file that stock decoders can read never
- *    requires it, and one they cannot read always does.
+ *    requires it, and one they cannot read always does. The write's encodes
+ *    run between DracoUvModule.BeginGltfWrite() and EndGltfWrite(), so that
+ *    with prediction 'auto' the first primitive that would need the marker
+ *    keeps draco-uv's coding only if it saves more than the marker's JSON
+ *    costs (80 bytes), as draco-uv's native glTF encoder does: auto never
+ *    makes a file bigger than stock coding.
  *
  * The extension must be present on a Document for its write hook to run:
  * registerDracoUv() adds it to every Document the I/O writes; without that
@@ -39,20 +44,45 @@ const ENCODER = 'draco3d.encoder';
 const uvModules = new WeakMap();
 
 /**
- * Successful encodes so far in |encoderModule| that wrote draco-uv ids; 0 for
- * a module without draco-uv's encoder API (npm draco3d's), which cannot
- * write them.
+ * The DracoUvModule of |encoderModule|, or null for a module without
+ * draco-uv's encoder API (npm draco3d's).
  */
-export function countDracoUvEncodes(encoderModule) {
+function uvModuleOf(encoderModule) {
   if (!encoderModule || typeof encoderModule.DracoUvModule !== 'function') {
-    return 0;
+    return null;
   }
   let uvModule = uvModules.get(encoderModule);
   if (!uvModule) {
     uvModule = new encoderModule.DracoUvModule();
     uvModules.set(encoderModule, uvModule);
   }
-  return uvModule.GetNumEncodesWithDracoUvIds();
+  return uvModule;
+}
+
+/**
+ * Successful encodes so far in |encoderModule| that wrote draco-uv ids; 0 for
+ * a module without draco-uv's encoder API (npm draco3d's), which cannot
+ * write them.
+ */
+export function countDracoUvEncodes(encoderModule) {
+  const uvModule = uvModuleOf(encoderModule);
+  return uvModule ? uvModule.GetNumEncodesWithDracoUvIds() : 0;
+}
+
+/**
+ * Tells |encoderModule| that the encodes of one glTF file begin (|begin|) or
+ * end: in between, prediction 'auto' pays for the marker as in draco-uv's
+ * native glTF encoder. No-op for modules without draco-uv's encoder API.
+ */
+function markGltfWrite(encoderModule, begin) {
+  const uvModule = uvModuleOf(encoderModule);
+  if (uvModule) {
+    if (begin) {
+      uvModule.BeginGltfWrite();
+    } else {
+      uvModule.EndGltfWrite();
+    }
+  }
 }
 
 /**
@@ -65,7 +95,8 @@ export class DracoUvTexcoordCompression extends Extension {
   writeDependencies = [ENCODER];
 
   // The encoder module of the write under way and its count of draco-uv
-  // encodes when the write began (install() runs before any prewrite hook).
+  // encodes when the write began (install() runs before any prewrite hook,
+  // where KHRDracoMeshCompression encodes; write() after them).
   _encoderModule = null;
   _encodesBefore = 0;
 
@@ -74,6 +105,7 @@ export class DracoUvTexcoordCompression extends Extension {
     if (key === ENCODER) {
       this._encoderModule = dependency || null;
       this._encodesBefore = countDracoUvEncodes(this._encoderModule);
+      markGltfWrite(this._encoderModule, true);
     }
     return this;
   }
@@ -85,6 +117,7 @@ export class DracoUvTexcoordCompression extends Extension {
 
   /** @hidden */
   write(context) {
+    markGltfWrite(this._encoderModule, false);
     const json = context.jsonDoc.json;
     const name = this.extensionName;
     const used =
@@ -139,6 +172,9 @@ export async function registerDracoUv(io, options = {}) {
     try {
       return await writeJSON(document, writerOptions);
     } finally {
+      // Also when the write failed between the extension's install() and
+      // write().
+      markGltfWrite(encoderModule, false);
       if (added) {
         added.dispose();
       }
