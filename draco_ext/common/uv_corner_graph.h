@@ -73,15 +73,18 @@ void BuildUvCornerGraph(const MeshDataT &mesh_data, UvCornerGraph *graph) {
   const int32_t num_entries =
       static_cast<int32_t>(mesh_data.data_to_corner_map()->size());
   const int num_corners = table.num_corners();
-  const auto is_dropped = [&](CornerIndex corner) {
-    return table.IsDegenerated(table.Face(corner));
-  };
+  // One degeneracy test per face (CornerTable::IsDegenerated() is not
+  // inlined), read by each of its corners and by its opposite corners.
+  std::vector<uint8_t> dropped(num_corners / 3);
+  for (int f = 0; f < num_corners / 3; ++f) {
+    dropped[f] = table.IsDegenerated(FaceIndex(f));
+  }
   graph->entry.resize(num_corners);
   graph->opposite.resize(num_corners);
   for (int c = 0; c < num_corners; ++c) {
     const CornerIndex corner(c);
     graph->entry[c] = graph->opposite[c] = UvCornerGraph::kNone;
-    if (is_dropped(corner)) {
+    if (dropped[c / 3]) {
       continue;
     }
     const VertexIndex v = table.Vertex(corner);
@@ -94,7 +97,7 @@ void BuildUvCornerGraph(const MeshDataT &mesh_data, UvCornerGraph *graph) {
     }
     const CornerIndex opposite = table.Opposite(corner);
     if (opposite != kInvalidCornerIndex && opposite.value() < num_corners &&
-        !is_dropped(opposite)) {
+        !dropped[opposite.value() / 3]) {
       graph->opposite[c] = static_cast<int32_t>(opposite.value());
     }
   }
