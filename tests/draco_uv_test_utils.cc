@@ -72,6 +72,18 @@ std::vector<std::string> DracoTestdataTexturedMeshes() {
   return meshes;
 }
 
+std::vector<std::string> TexturedObjPlyMeshPaths() {
+  std::vector<std::string> paths = {UvTestdataPath("torus_uv.obj"),
+                                    UvTestdataPath("crane_spot.obj")};
+  for (const std::string &name : DracoTestdataTexturedMeshes()) {
+    const std::string extension = fs::path(name).extension().string();
+    if (extension == ".obj" || extension == ".ply") {
+      paths.push_back(DracoTestdataPath(name));
+    }
+  }
+  return paths;
+}
+
 std::vector<std::string> CorpusMeshPaths() {
   std::vector<std::string> meshes;
   const fs::path dir = fs::path(CorpusDir()) / "meshes";

@@ -37,6 +37,9 @@ std::string CorpusDir();
 // Meshes of Draco's testdata (OBJ, PLY, glTF, GLB) that load and have
 // texture coordinates on faces, as paths relative to its testdata/.
 std::vector<std::string> DracoTestdataTexturedMeshes();
+// Full paths of textured OBJ and PLY meshes, 8 to 10^5 corners: torus_uv
+// and crane_spot from our testdata/, then those of Draco's testdata.
+std::vector<std::string> TexturedObjPlyMeshPaths();
 // The corpus's meshes/*.obj; empty when the corpus is absent.
 std::vector<std::string> CorpusMeshPaths();
 

@@ -95,18 +95,6 @@ std::vector<char> NativeBytes(const Mesh &mesh, const std::string &scheme,
   return bytes.ok() ? bytes.value() : std::vector<char>();
 }
 
-std::vector<std::string> TexturedMeshPaths() {
-  std::vector<std::string> paths = {UvTestdataPath("torus_uv.obj"),
-                                    UvTestdataPath("crane_spot.obj")};
-  for (const std::string &name : DracoTestdataTexturedMeshes()) {
-    if (name.size() > 4 && (name.substr(name.size() - 4) == ".obj" ||
-                            name.substr(name.size() - 4) == ".ply")) {
-      paths.push_back(DracoTestdataPath(name));
-    }
-  }
-  return paths;
-}
-
 TEST(UvWebEncoderTest, UnknownNamesFailWithTheValidOnes) {
   DracoUvOptions options;
   EXPECT_FALSE(options.SetPrediction("wieghted"));
@@ -165,7 +153,7 @@ TEST(UvWebEncoderTest, InconsistentOptionsAreRefusedWithAMessage) {
 }
 
 TEST(UvWebEncoderTest, WithoutSettingsTheOutputIsStockDracos) {
-  for (const std::string &path : TexturedMeshPaths()) {
+  for (const std::string &path : TexturedObjPlyMeshPaths()) {
     const std::unique_ptr<Mesh> mesh = LoadMesh(path);
     UvWebModuleState state;
     UvWebEncoder web(&state);
@@ -191,7 +179,7 @@ TEST(UvWebEncoderTest, WithoutSettingsTheOutputIsStockDracos) {
 // The module default gives draco_encoder's bytes for the same flags, on
 // every mesh and for every setting.
 TEST(UvWebEncoderTest, ModuleDefaultWritesDracoEncodersBytes) {
-  for (const std::string &path : TexturedMeshPaths()) {
+  for (const std::string &path : TexturedObjPlyMeshPaths()) {
     const std::unique_ptr<Mesh> mesh = LoadMesh(path);
     for (const std::string scheme :
          {"auto", "weighted_multi", "auto+context", "parallelogram"}) {

@@ -39,20 +39,6 @@ std::unique_ptr<Mesh> LoadMesh(const std::string &path) {
   return mesh.ok() ? std::move(mesh).value() : nullptr;
 }
 
-// Textured meshes from 8 to 10^5 corners: the small ones gain less from
-// draco-uv than the marker costs, the large ones more.
-std::vector<std::string> TexturedMeshPaths() {
-  std::vector<std::string> paths = {UvTestdataPath("torus_uv.obj"),
-                                    UvTestdataPath("crane_spot.obj")};
-  for (const std::string &name : DracoTestdataTexturedMeshes()) {
-    if (name.size() > 4 && (name.substr(name.size() - 4) == ".obj" ||
-                            name.substr(name.size() - 4) == ".ply")) {
-      paths.push_back(DracoTestdataPath(name));
-    }
-  }
-  return paths;
-}
-
 // A draco::Encoder set up like glTF-Transform's KHRDracoMeshCompression
 // defaults (-qp 14 -qt 12 -qn 10 -qg 12, speed 5).
 void SetUpLikeGltfTransform(Encoder *encoder) {
@@ -116,7 +102,7 @@ std::vector<char> StockBytes(const Mesh &mesh) {
 // stock coding's. Both outcomes occur over the meshes.
 TEST(UvWebGltfWriteTest, AutoMakesTheNativeGltfEncodersChoice) {
   int kept = 0, dropped = 0;
-  for (const std::string &path : TexturedMeshPaths()) {
+  for (const std::string &path : TexturedObjPlyMeshPaths()) {
     const std::unique_ptr<Mesh> mesh = LoadMesh(path);
     ASSERT_NE(mesh, nullptr);
     UvWebModuleState state;
@@ -154,7 +140,7 @@ struct SmallAndLarge {
 
 SmallAndLarge FindSmallAndLarge() {
   SmallAndLarge meshes;
-  for (const std::string &path : TexturedMeshPaths()) {
+  for (const std::string &path : TexturedObjPlyMeshPaths()) {
     std::unique_ptr<Mesh> mesh = LoadMesh(path);
     UvWebModuleState state;
     UvWebEncoder web(&state);
