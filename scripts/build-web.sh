@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The WebAssembly/JavaScript build of draco-uv: Draco's own JS targets
 # (draco_decoder, draco_encoder, with the IDL glue of Draco 1.5.5's
-# draco_web_decoder.idl / draco_web_encoder.idl, unchanged) built from the
+# draco_web_decoder.idl and draco_web_encoder.idl, the latter with patch
+# 0013's entries for draco-uv's coders) built from the
 # patched Draco with Debian's emscripten, laid out as a folder that works
 # like npm's draco3d package and like three.js's examples/jsm/libs/draco/.
 #
