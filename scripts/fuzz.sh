@@ -8,6 +8,13 @@
 #   scripts/fuzz.sh smoke [SECONDS]  every target but decode:stock for SECONDS
 #                                    (default 4); exits 77 (skipped) without
 #                                    the build
+#   scripts/fuzz.sh deep RUNS [NAME...]
+#                                    decode:NAME targets (default: every
+#                                    variant) for RUNS executions each,
+#                                    seeded with the small golden meshes only
+#                                    (testdata/golden/small_*.NAME.drc and
+#                                    cube_att, tens of vertices), so ASan
+#                                    runs thousands of decodes a second
 #
 # Targets (tests/fuzz/):
 #   decode:NAME  draco_uv_decode_fuzzer, one per row NAME of
@@ -83,11 +90,14 @@ stock_oom() {
   [[ ${frame} == */draco-patched/src/draco/* ]]
 }
 
-# run_target LABEL BINARY SECONDS SEED_DIR...: prints one table row.
+# run_target LABEL BINARY SECONDS SEED_DIR...: prints one table row (the
+# seconds it took, executions, corpus size, crashes, stock OOMs). With
+# RUNS set, the campaign stops after RUNS executions instead (SECONDS is then
+# only a safety limit) and keeps its own corpus, apart from the timed ones.
 run_target() {
   local label=$1 binary=$2 seconds=$3
   shift 3
-  local dir=${label/:/_}
+  local dir=${label/:/_}${RUNS:+_deep}
   local corpus="${FUZZ_BUILD_DIR}/corpus/${dir}"
   local artifacts="${FUZZ_BUILD_DIR}/artifacts/${dir}"
   local log="${FUZZ_BUILD_DIR}/logs/${dir}.log"
@@ -98,12 +108,12 @@ run_target() {
   done
   # Fork mode with -ignore_*: the campaign goes on after a crash, timeout
   # or out-of-memory; each leaves its input in ${artifacts}.
-  local status=0 start
+  local status=0 start t0=${SECONDS}
   start=$(mktemp)
   ASAN_OPTIONS=${ASAN_OPTIONS:-detect_leaks=1:allocator_may_return_null=0} \
   UBSAN_OPTIONS=${UBSAN_OPTIONS:-print_stacktrace=1:halt_on_error=1:suppressions=${PWD}/tests/fuzz/stock_draco_ubsan.supp} \
     "${binary}" -fork=1 -ignore_crashes=1 -ignore_timeouts=1 -ignore_ooms=1 \
-      -max_total_time="${seconds}" -timeout=20 -rss_limit_mb=2048 \
+      -max_total_time="${seconds}" ${RUNS:+-runs=${RUNS}} -timeout=20 -rss_limit_mb=2048 \
       -malloc_limit_mb=1024 -artifact_prefix="${artifacts}/" \
       "${corpus}" "${seeds[@]}" >"${log}" 2>&1 || status=$?
   local executions corpus_size crashes stock=0 file
@@ -120,7 +130,7 @@ run_target() {
   crashes=$(find "${artifacts}" -maxdepth 1 -type f -newer "${start}" | wc -l)
   rm -f "${start}"
   [[ ${crashes} -eq 0 ]] || status=1
-  printf '%-34s %6s %12s %8s %8s %6s %s\n' "${label}" "${seconds}" \
+  printf '%-34s %6s %12s %8s %8s %6s %s\n' "${label}" "$((SECONDS - t0))" \
     "${executions:-?}" "${corpus_size}" "${crashes}" "${stock}" \
     "$([[ ${status} -eq 0 ]] || echo "FAILED, see ${log} and ${artifacts}")"
   [[ ${status} -eq 0 ]]
@@ -144,6 +154,26 @@ run_all() {
     testdata/golden/lossy testdata/fuzz/decode || failures=$((failures + 1))
   run_target roundtrip "${bin}/draco_uv_roundtrip_fuzzer" "${seconds}" \
     testdata/fuzz/roundtrip || failures=$((failures + 1))
+  echo "fuzz targets with crashes: ${failures}"
+  [[ ${failures} -eq 0 ]]
+}
+
+# run_deep RUNS [NAME...]: deep decode campaigns from the small seeds.
+run_deep() {
+  local runs=$1 bin="${FUZZ_BUILD_DIR}/tests/fuzz" failures=0 name names
+  shift
+  names=("$@")
+  [[ ${#names[@]} -gt 0 ]] || mapfile -t names < <(variant_names)
+  printf '%-34s %6s %12s %8s %8s %6s\n' target seconds executions corpus crashes \
+    stock
+  for name in "${names[@]}"; do
+    local seeds="${FUZZ_BUILD_DIR}/seeds-small/${name}"
+    rm -rf "${seeds}" && mkdir -p "${seeds}"
+    cp testdata/golden/small_*."${name}".drc testdata/golden/cube_att."${name}".drc \
+      "${seeds}/" || die "no small golden files for ${name}; run scripts/make-golden.sh"
+    RUNS=${runs} run_target "decode:${name}" "${bin}/draco_uv_decode_fuzzer" 86400 \
+      "${seeds}" || failures=$((failures + 1))
+  done
   echo "fuzz targets with crashes: ${failures}"
   [[ ${failures} -eq 0 ]]
 }
@@ -174,7 +204,12 @@ main() {
       # within seconds and would make the test command flaky.
       run_all "${2:-4}" stock
       ;;
-    *) die "usage: $0 build | run [SECONDS] | smoke [SECONDS]" ;;
+    deep)
+      [[ ${2:-} =~ ^[0-9]+$ ]] || die "usage: $0 deep RUNS [NAME...]"
+      have_build || build
+      run_deep "${@:2}"
+      ;;
+    *) die "usage: $0 build | run [SECONDS] | smoke [SECONDS] | deep RUNS [NAME...]" ;;
   esac
 }
 

@@ -34,10 +34,13 @@ golden_dir=testdata/golden
 lossy_dir=testdata/golden/lossy
 encoder="${build_dir}/draco/draco_encoder"
 digest="${build_dir}/draco/draco_uv_digest"
-# Two self-made meshes (one chart; six charts) and Draco's tiny seamed cube.
+# Two self-made meshes (one chart; six charts), the same two with tens of
+# vertices (seeds for scripts/fuzz.sh deep) and Draco's tiny seamed cube.
 meshes=(
   testdata/torus_uv.obj
   testdata/bumpy_cube_sphere.obj
+  testdata/small_torus_uv.obj
+  testdata/small_cube_sphere.obj
   "${build_dir}/draco-patched/testdata/cube_att.obj"
 )
 

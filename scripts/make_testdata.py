@@ -8,6 +8,9 @@ torus_uv.obj             a torus with the analytic (u, v) parameterisation:
 bumpy_cube_sphere.obj    a displaced sphere made of the six faces of a cube,
                          each face its own UV chart in a 3 x 2 atlas:
                          seams along the cube's edges, charts with margins.
+small_torus_uv.obj,      the same two meshes with tens of vertices, for
+small_cube_sphere.obj    golden files that fuzzers mutate thousands of times
+                         per second.
 The output is deterministic; the files are committed, this script documents
 how they were made.
 """
@@ -113,6 +116,12 @@ def main():
     write_obj(os.path.join(outdir, "bumpy_cube_sphere.obj"),
               header + ["Displaced cube-sphere, one UV chart per cube face."],
               *bumpy_cube_sphere())
+    write_obj(os.path.join(outdir, "small_torus_uv.obj"),
+              header + ["Torus, 8 x 5 vertices, one chart (fuzz seeds)."],
+              *torus(n_major=8, n_minor=5))
+    write_obj(os.path.join(outdir, "small_cube_sphere.obj"),
+              header + ["Cube-sphere, six 3 x 3 charts (fuzz seeds)."],
+              *bumpy_cube_sphere(n=3))
 
 
 if __name__ == "__main__":
