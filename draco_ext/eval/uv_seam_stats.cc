@@ -168,9 +168,9 @@ StatusOr<UvSeamProblem> BuildUvSeamProblem(const Mesh &mesh,
   problem.num_attributes = static_cast<int>(att_tables.size());
   for (const uint32_t corner : problem.edge_corners) {
     for (const MeshAttributeCornerTable *const att_table : att_tables) {
-      problem.bits.push_back(att_table != nullptr &&
-                             att_table->IsCornerOppositeToSeamEdge(
-                                 CornerIndex(corner)));
+      problem.bits.push_back(
+          att_table != nullptr &&
+          att_table->IsCornerOppositeToSeamEdge(CornerIndex(corner)));
     }
   }
   return problem;

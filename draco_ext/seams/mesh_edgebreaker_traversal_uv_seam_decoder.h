@@ -88,9 +88,9 @@ class MeshEdgebreakerTraversalUvSeamDecoder : public TraversalDecoderT {
   // Decodes all seams on the finished connectivity; false on corrupt data.
   bool OnConnectivityDecoded() {
     next_bit_ = 0;
-    return DecodeUvSeams(UvSeamDracoCornerTable(decoder_impl_->GetCornerTable()),
-                         num_attribute_data_, seam_data_, seam_size_,
-                         &draco_order_bits_);
+    return DecodeUvSeams(
+        UvSeamDracoCornerTable(decoder_impl_->GetCornerTable()),
+        num_attribute_data_, seam_data_, seam_size_, &draco_order_bits_);
   }
 
   // Called in Draco's seam order, like the encoder's EncodeAttributeSeam().

@@ -72,8 +72,7 @@ class MeshEdgebreakerTraversalUvSeamEncoder : public TraversalEncoderT {
     return CornerTableInDecoderOrder(*impl->GetCornerTable(),
                                      impl->GetProcessedConnectivityCorners(),
                                      &table) &&
-           EncodeUvSeams(table, num_attribute_data_, draco_order_bits_,
-                         bytes);
+           EncodeUvSeams(table, num_attribute_data_, draco_order_bits_, bytes);
   }
 
   int num_attribute_data_ = 0;

@@ -56,7 +56,9 @@ namespace draco {
 struct UvSeamCornerTable {
   static constexpr uint32_t kBoundary = 0xFFFFFFFFu;
 
-  uint32_t num_corners() const { return static_cast<uint32_t>(opposite.size()); }
+  uint32_t num_corners() const {
+    return static_cast<uint32_t>(opposite.size());
+  }
   uint32_t Opposite(uint32_t corner) const { return opposite[corner]; }
   uint32_t Vertex(uint32_t corner) const { return vertex[corner]; }
 
@@ -91,8 +93,8 @@ class UvSeamContextCoder {
   template <class BitIoT>
   bool Code(BitIoT *io, uint8_t *bits) {
     // One attribute (the common case) with a constant count.
-    const bool ok = num_attributes_ == 1 ? CodeBits<1>(io, bits)
-                                         : CodeBits<0>(io, bits);
+    const bool ok =
+        num_attributes_ == 1 ? CodeBits<1>(io, bits) : CodeBits<0>(io, bits);
     bool checks_ok = true;
     for (int i = 0; i < kUvSeamCheckBits; ++i) {
       checks_ok = !io->Code(kUvSeamProbabilityOne / 2, false) && checks_ok;
@@ -185,8 +187,7 @@ class UvSeamContextCoder {
 };
 
 template <class TableT>
-bool UvSeamContextCoder<TableT>::Init(const TableT &table,
-                                      int num_attributes) {
+bool UvSeamContextCoder<TableT>::Init(const TableT &table, int num_attributes) {
   table_ = &table;
   num_attributes_ = num_attributes;
   num_edges_ = 0;
@@ -225,8 +226,8 @@ bool UvSeamContextCoder<TableT>::Init(const TableT &table,
 
 template <class TableT>
 template <bool kPrevious>
-int UvSeamContextCoder<TableT>::StepsToCut(
-    uint32_t corner, const uint8_t *seam_corners) const {
+int UvSeamContextCoder<TableT>::StepsToCut(uint32_t corner,
+                                           const uint8_t *seam_corners) const {
   for (int steps = 1; steps <= kMaxSteps; ++steps) {
     const uint32_t wing = kPrevious ? Previous(corner) : Next(corner);
     if (IsCut(wing, seam_corners)) {
@@ -254,16 +255,17 @@ int UvSeamContextCoder<TableT>::StepPair(uint32_t corner, uint32_t opposite,
 
 template <class TableT>
 template <class BitIoT>
-bool UvSeamContextCoder<TableT>::CodeBit(BitIoT *io, Probability *probability,
-                                         uint8_t *bit) {
+inline bool UvSeamContextCoder<TableT>::CodeBit(BitIoT *io,
+                                                Probability *probability,
+                                                uint8_t *bit) {
   // 65536 * 2 / (2 * seen + 3): the rate of a count-based estimate, which
   // settles at 1/46.5 (kMaxSeen).
   static constexpr uint16_t kRate[kMaxSeen + 1] = {
       43690, 26214, 18724, 14563, 11915, 10082, 8738, 7710, 6898, 6241,
-      5698, 5242, 4854, 4519, 4228, 3971, 3744, 3542, 3360, 3196,
-      3048, 2912, 2788, 2674, 2570, 2473, 2383, 2299, 2221, 2148,
-      2080, 2016, 1956, 1899, 1846, 1795, 1747, 1702, 1659, 1618,
-      1579, 1542, 1506, 1472, 1440, 1409};
+      5698,  5242,  4854,  4519,  4228,  3971,  3744, 3542, 3360, 3196,
+      3048,  2912,  2788,  2674,  2570,  2473,  2383, 2299, 2221, 2148,
+      2080,  2016,  1956,  1899,  1846,  1795,  1747, 1702, 1659, 1618,
+      1579,  1542,  1506,  1472,  1440,  1409};
   const uint32_t p1 = probability->p1;
   // p1 stays within [1, 65535]; | 1 keeps the coder's probability in
   // [1, 4095].
@@ -280,7 +282,8 @@ template <class TableT>
 template <int kNumAttributes, class BitIoT>
 bool UvSeamContextCoder<TableT>::CodeBits(BitIoT *io, uint8_t *bits) {
   const TableT &table = *table_;
-  const int num_attributes = kNumAttributes > 0 ? kNumAttributes : num_attributes_;
+  const int num_attributes =
+      kNumAttributes > 0 ? kNumAttributes : num_attributes_;
   const size_t num_corners = table.num_corners() / 3 * 3;
   const size_t num_vertices = table.num_vertices;
   uint8_t *bit = bits;
@@ -376,9 +379,8 @@ class UvSeamDecodingIo {
 // check bits catch altered bytes (all but a 2^-14 fraction of them), the
 // range coder's tail truncation and trailing bytes.
 template <class TableT>
-bool DecodeUvSeams(const TableT &table, int num_attributes,
-                   const uint8_t *data, size_t size,
-                   std::vector<uint8_t> *bits) {
+bool DecodeUvSeams(const TableT &table, int num_attributes, const uint8_t *data,
+                   size_t size, std::vector<uint8_t> *bits) {
   UvSeamContextCoder<TableT> coder;
   if (!coder.Init(table, num_attributes)) {
     return false;

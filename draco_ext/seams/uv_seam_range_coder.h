@@ -70,9 +70,8 @@ class UvSeamRangeDecoder {
 
   // Inline: the seam decoder calls it once per interior edge.
   bool DecodeBit(uint32_t probability_of_one) {
-    const uint32_t bound =
-        (range_ >> kUvSeamProbabilityBits) *
-        (kUvSeamProbabilityOne - probability_of_one);
+    const uint32_t bound = (range_ >> kUvSeamProbabilityBits) *
+                           (kUvSeamProbabilityOne - probability_of_one);
     const bool bit = code_ >= bound;
     if (bit) {
       code_ -= bound;

@@ -63,7 +63,8 @@ TEST(UvSeamCoderTest, RoundTripsTheSeamsOfDracoTestdata) {
   const std::vector<UvSeamProblem> problems = DracoTestdataProblems();
   ASSERT_GE(problems.size(), 20u);
   for (const UvSeamProblem &problem : problems) {
-    EXPECT_TRUE(RoundTrips(problem.table, problem.num_attributes, problem.bits));
+    EXPECT_TRUE(
+        RoundTrips(problem.table, problem.num_attributes, problem.bits));
   }
 }
 
@@ -82,10 +83,10 @@ TEST(UvSeamCoderTest, RoundTripsArbitrarySeamSetsOfSeveralAttributes) {
         std::vector<uint8_t> bits(NumBits(table, num_attributes));
         for (size_t i = 0; i < bits.size(); ++i) {
           const int attribute = static_cast<int>(i % num_attributes);
-          bits[i] = attribute == 0   ? static_cast<int>(random() % 100) < percent
-                    : attribute == 1 ? (random() % 4 == 0 ? !bits[i - 1]
-                                                          : bits[i - 1])
-                                     : random() % 2;
+          bits[i] = attribute == 0 ? static_cast<int>(random() % 100) < percent
+                    : attribute == 1
+                        ? (random() % 4 == 0 ? !bits[i - 1] : bits[i - 1])
+                        : random() % 2;
         }
         EXPECT_TRUE(RoundTrips(table, num_attributes, bits))
             << name << " " << num_attributes << " " << percent;

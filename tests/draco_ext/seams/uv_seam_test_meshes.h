@@ -22,8 +22,8 @@
 
 #include "draco/mesh/mesh.h"
 #include "draco/mesh/mesh_misc_functions.h"
-#include "draco_ext/seams/uv_seam_edgebreaker.h"
 #include "draco_ext/seams/uv_seam_coder.h"
+#include "draco_ext/seams/uv_seam_edgebreaker.h"
 #include "gtest/gtest.h"
 #include "tests/draco_uv_test_utils.h"
 
