@@ -57,16 +57,12 @@ list(
   APPEND draco_compression_entropy_sources
          "${draco_uv_ext}/common/uv_residual_coder.cc"
          "${draco_uv_ext}/common/uv_residual_coder.h"
-         "${draco_uv_ext}/seams/uv_seam_bit_model.cc"
-         "${draco_uv_ext}/seams/uv_seam_bit_model.h"
          "${draco_uv_ext}/seams/uv_seam_coder.cc"
          "${draco_uv_ext}/seams/uv_seam_coder.h"
          "${draco_uv_ext}/seams/uv_seam_edgebreaker.cc"
          "${draco_uv_ext}/seams/uv_seam_edgebreaker.h"
          "${draco_uv_ext}/seams/uv_seam_range_coder.cc"
-         "${draco_uv_ext}/seams/uv_seam_range_coder.h"
-         "${draco_uv_ext}/seams/uv_seam_topology.cc"
-         "${draco_uv_ext}/seams/uv_seam_topology.h")
+         "${draco_uv_ext}/seams/uv_seam_range_coder.h")
 
 # Seen by tests/CMakeLists.txt, outside Draco's directory scope.
 set(DRACO_UV_DENSE_FRONT_AVX2 OFF CACHE INTERNAL "")

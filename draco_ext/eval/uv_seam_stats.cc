@@ -15,6 +15,7 @@
 #include "draco_ext/eval/uv_seam_stats.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "draco/compression/bit_coders/rans_bit_encoder.h"
@@ -54,30 +55,57 @@ double BinaryEntropy(double p) {
                           : -(p * std::log2(p) + (1 - p) * std::log2(1 - p));
 }
 
+// The interior edges of |table| in Draco's seam order (uv_seam_coder.h),
+// each as the corner it is opposite to.
+std::vector<uint32_t> DracoSeamEdgeCorners(const UvSeamCornerTable &table) {
+  std::vector<uint32_t> corners;
+  for (uint32_t c = 0; c < table.num_corners(); ++c) {
+    const uint32_t opposite = table.Opposite(c);
+    if (opposite != UvSeamCornerTable::kBoundary && opposite / 3 >= c / 3) {
+      corners.push_back(c);
+    }
+  }
+  return corners;
+}
+
+// The two vertices of the edge opposite to |corner|.
+std::array<uint32_t, 2> EdgeVertices(const UvSeamCornerTable &table,
+                                     uint32_t corner) {
+  const uint32_t first = corner / 3 * 3;
+  return {table.Vertex(first + (corner - first + 1) % 3),
+          table.Vertex(first + (corner - first + 2) % 3)};
+}
+
 // Per-vertex crease flags of one attribute (Isenburg & Snoeyink 2000): a
 // vertex's flag is skipped when a known crease implies it or when all its
 // edges are decided; a flagged vertex's last undecided edge is skipped
 // when it must be the crease.
-void EncodePerVertexFlags(const UvSeamTopology &topology,
-                          const UvSeamFlags &seams,
+void EncodePerVertexFlags(const UvSeamProblem &problem, int attribute,
                           UvSeamRangeEncoder *encoder) {
   constexpr uint8_t kUndecided = 2;
-  UvSeamFlags state(topology.num_edges(), kUndecided);
+  const size_t num_edges = problem.edge_corners.size();
+  std::vector<std::vector<uint32_t>> edges_at(problem.table.num_vertices);
+  for (size_t e = 0; e < num_edges; ++e) {
+    for (const uint32_t v :
+         EdgeVertices(problem.table, problem.edge_corners[e])) {
+      edges_at[v].push_back(static_cast<uint32_t>(e));
+    }
+  }
+  auto seam = [&](uint32_t e) {
+    return problem.bits[e * problem.num_attributes + attribute] != 0;
+  };
+  std::vector<uint8_t> state(num_edges, kUndecided);
   AdaptiveBit flag_bit, edge_bit;
-  for (int32_t v = 0; v < topology.num_vertices(); ++v) {
-    std::vector<int32_t> undecided;
+  for (const std::vector<uint32_t> &ring : edges_at) {
+    std::vector<uint32_t> undecided;
     bool known_crease = false;
     bool has_crease = false;
-    for (const int32_t *e = topology.RingBegin(v); e != topology.RingEnd(v);
-         ++e) {
-      if (*e == UvSeamTopology::kBoundary) {
-        continue;
-      }
-      has_crease = has_crease || seams[*e];
-      if (state[*e] == kUndecided) {
-        undecided.push_back(*e);
+    for (const uint32_t e : ring) {
+      has_crease = has_crease || seam(e);
+      if (state[e] == kUndecided) {
+        undecided.push_back(e);
       } else {
-        known_crease = known_crease || state[*e] == 1;
+        known_crease = known_crease || state[e] == 1;
       }
     }
     if (undecided.empty()) {
@@ -88,14 +116,14 @@ void EncodePerVertexFlags(const UvSeamTopology &topology,
     }
     bool crease_seen = known_crease;
     for (size_t i = 0; i < undecided.size(); ++i) {
-      const int32_t e = undecided[i];
-      state[e] = seams[e];
+      const uint32_t e = undecided[i];
+      state[e] = seam(e);
       const bool implied =
           !has_crease || (i + 1 == undecided.size() && !crease_seen);
       if (!implied) {
-        edge_bit.Encode(seams[e], encoder);
+        edge_bit.Encode(seam(e), encoder);
       }
-      crease_seen = crease_seen || seams[e];
+      crease_seen = crease_seen || seam(e);
     }
   }
 }
@@ -121,10 +149,10 @@ StatusOr<UvSeamProblem> BuildUvSeamProblem(const Mesh &mesh,
   Mesh decoded;
   DRACO_RETURN_IF_ERROR(decoder.Decode(DecoderOptions(), &buffer, &decoded));
   UvSeamProblem problem;
-  if (!problem.topology.Init(OppositesOf(*decoder.GetCornerTable()))) {
-    return Status(Status::DRACO_ERROR, "Invalid decoded connectivity.");
-  }
+  problem.table = UvSeamCornerTableOf(*decoder.GetCornerTable());
+  problem.edge_corners = DracoSeamEdgeCorners(problem.table);
   // Draco's attribute data: the non-position attributes in attribute order.
+  std::vector<const MeshAttributeCornerTable *> att_tables;
   for (int i = 0; i < mesh.num_attributes(); ++i) {
     const PointAttribute *const att = mesh.attribute(i);
     if (att->attribute_type() == GeometryAttribute::POSITION) {
@@ -135,26 +163,25 @@ StatusOr<UvSeamProblem> BuildUvSeamProblem(const Mesh &mesh,
       return Status(Status::DRACO_ERROR, "Attribute lost in decoding.");
     }
     // Null for attributes Draco codes per vertex: they have no seams.
-    const MeshAttributeCornerTable *const att_table =
-        decoder.GetAttributeCornerTable(decoded_id);
-    UvSeamFlags flags(problem.topology.num_edges(), 0);
-    for (int32_t e = 0;
-         att_table != nullptr && e < problem.topology.num_edges(); ++e) {
-      flags[e] = att_table->IsCornerOppositeToSeamEdge(
-          CornerIndex(problem.topology.EdgeCorner(e)));
+    att_tables.push_back(decoder.GetAttributeCornerTable(decoded_id));
+  }
+  problem.num_attributes = static_cast<int>(att_tables.size());
+  for (const uint32_t corner : problem.edge_corners) {
+    for (const MeshAttributeCornerTable *const att_table : att_tables) {
+      problem.bits.push_back(
+          att_table != nullptr &&
+          att_table->IsCornerOppositeToSeamEdge(CornerIndex(corner)));
     }
-    problem.seams.push_back(std::move(flags));
   }
   return problem;
 }
 
 int64_t PerEdgeSeamBytes(const UvSeamProblem &problem) {
   UvSeamRangeEncoder encoder;
-  const std::vector<int32_t> order = problem.topology.DracoSeamOrder();
-  for (const UvSeamFlags &seams : problem.seams) {
+  for (int a = 0; a < problem.num_attributes; ++a) {
     AdaptiveBit bit;
-    for (const int32_t e : order) {
-      bit.Encode(seams[e], &encoder);
+    for (size_t i = a; i < problem.bits.size(); i += problem.num_attributes) {
+      bit.Encode(problem.bits[i] != 0, &encoder);
     }
   }
   return FramedSize(encoder.Finish().size());
@@ -162,20 +189,19 @@ int64_t PerEdgeSeamBytes(const UvSeamProblem &problem) {
 
 int64_t PerVertexSeamBytes(const UvSeamProblem &problem) {
   UvSeamRangeEncoder encoder;
-  for (const UvSeamFlags &seams : problem.seams) {
-    EncodePerVertexFlags(problem.topology, seams, &encoder);
+  for (int a = 0; a < problem.num_attributes; ++a) {
+    EncodePerVertexFlags(problem, a, &encoder);
   }
   return FramedSize(encoder.Finish().size());
 }
 
 int64_t StockSeamStreamBytes(const UvSeamProblem &problem) {
-  const std::vector<int32_t> order = problem.topology.DracoSeamOrder();
   int64_t bytes = 0;
-  for (const UvSeamFlags &seams : problem.seams) {
+  for (int a = 0; a < problem.num_attributes; ++a) {
     RAnsBitEncoder encoder;
     encoder.StartEncoding();
-    for (const int32_t e : order) {
-      encoder.EncodeBit(seams[e] != 0);
+    for (size_t i = a; i < problem.bits.size(); i += problem.num_attributes) {
+      encoder.EncodeBit(problem.bits[i] != 0);
     }
     EncoderBuffer buffer;
     encoder.EndEncoding(&buffer);
@@ -185,7 +211,12 @@ int64_t StockSeamStreamBytes(const UvSeamProblem &problem) {
 }
 
 int64_t ContextSeamStreamBytes(const UvSeamProblem &problem) {
-  return FramedSize(EncodeUvSeams(problem.topology, problem.seams).size());
+  std::vector<uint8_t> bytes;
+  if (!EncodeUvSeams(problem.table, problem.num_attributes, problem.bits,
+                     &bytes)) {
+    return -1;
+  }
+  return FramedSize(bytes.size());
 }
 
 StatusOr<UvSeamStats> MeasureUvSeams(const std::string &name, const Mesh &mesh,
@@ -194,11 +225,14 @@ StatusOr<UvSeamStats> MeasureUvSeams(const std::string &name, const Mesh &mesh,
                          BuildUvSeamProblem(mesh, settings));
   UvSeamStats stats;
   stats.mesh = name;
-  stats.attributes = static_cast<int>(problem.seams.size());
-  stats.vertices = problem.topology.num_vertices();
-  stats.interior_edges = problem.topology.num_edges();
-  for (const UvSeamFlags &seams : problem.seams) {
-    const int64_t seam_edges = std::count(seams.begin(), seams.end(), 1);
+  stats.attributes = problem.num_attributes;
+  stats.vertices = problem.table.num_vertices;
+  stats.interior_edges = static_cast<int64_t>(problem.edge_corners.size());
+  for (int a = 0; a < problem.num_attributes; ++a) {
+    int64_t seam_edges = 0;
+    for (size_t i = a; i < problem.bits.size(); i += problem.num_attributes) {
+      seam_edges += problem.bits[i];
+    }
     stats.seam_edges += seam_edges;
     if (stats.interior_edges > 0) {
       stats.per_edge_entropy_bytes +=

@@ -69,10 +69,13 @@ struct UvSeamStats {
 };
 
 // Draco's Edgebreaker seam bits of every non-position attribute of a mesh,
-// on the topology of its decoder, in Draco's attribute data order.
+// on the corner table of its decoder, in Draco's order.
 struct UvSeamProblem {
-  UvSeamTopology topology;
-  std::vector<UvSeamFlags> seams;  // [attribute][edge].
+  UvSeamCornerTable table;
+  int num_attributes = 0;  // Draco's attribute data order.
+  // Per interior edge in Draco's order, the corner it is opposite to.
+  std::vector<uint32_t> edge_corners;
+  std::vector<uint8_t> bits;  // [edge * num_attributes + attribute].
 };
 
 // Encodes |mesh| with |settings| (stock seam coding) and decodes it with

@@ -14,9 +14,10 @@
 //
 // Edgebreaker traversal decoders for the encoders of
 // mesh_edgebreaker_traversal_uv_seam_encoder.h: Draco's traversal decoder
-// for everything but the seams, which the crease-bit coder decodes as soon
-// as the connectivity is complete (the OnConnectivityDecoded() hook of
-// patch 0007) and then hands to MeshEdgebreakerDecoderImpl in Draco's order.
+// for everything but the seams, which the crease-bit coder decodes in one
+// pass over the corner table as soon as the connectivity is complete (the
+// OnConnectivityDecoded() hook of patch 0007), in the order in which
+// MeshEdgebreakerDecoderImpl then asks for them.
 #ifndef DRACO_EXT_SEAMS_MESH_EDGEBREAKER_TRAVERSAL_UV_SEAM_DECODER_H_
 #define DRACO_EXT_SEAMS_MESH_EDGEBREAKER_TRAVERSAL_UV_SEAM_DECODER_H_
 
@@ -28,9 +29,27 @@
 #include "draco/core/varint_decoding.h"
 #include "draco/draco_features.h"
 #include "draco_ext/seams/uv_seam_coder.h"
-#include "draco_ext/seams/uv_seam_edgebreaker.h"
 
 namespace draco {
+
+// Draco's CornerTable seen as UvSeamContextCoder's table.
+struct UvSeamDracoCornerTable {
+  // kInvalidCornerIndex's value.
+  static constexpr uint32_t kBoundary = 0xFFFFFFFFu;
+
+  explicit UvSeamDracoCornerTable(const CornerTable *corner_table)
+      : table(*corner_table), num_vertices(corner_table->num_vertices()) {}
+  uint32_t num_corners() const { return table.num_corners(); }
+  uint32_t Opposite(uint32_t corner) const {
+    return table.Opposite(CornerIndex(corner)).value();
+  }
+  uint32_t Vertex(uint32_t corner) const {
+    return table.Vertex(CornerIndex(corner)).value();
+  }
+
+  const CornerTable &table;
+  const uint32_t num_vertices;
+};
 
 // |TraversalDecoderT| is MeshEdgebreakerTraversalDecoder or a class derived
 // from it; MeshEdgebreakerDecoderImpl calls the methods below by name.
@@ -68,27 +87,16 @@ class MeshEdgebreakerTraversalUvSeamDecoder : public TraversalDecoderT {
 
   // Decodes all seams on the finished connectivity; false on corrupt data.
   bool OnConnectivityDecoded() {
-    UvSeamTopology topology;
-    std::vector<UvSeamFlags> seams;
-    if (!topology.Init(OppositesOf(*decoder_impl_->GetCornerTable())) ||
-        !DecodeUvSeams(topology, num_attribute_data_, seam_data_, seam_size_,
-                       &seams)) {
-      return false;
-    }
-    draco_order_bits_.clear();
-    for (const int32_t edge : topology.DracoSeamOrder()) {
-      for (const UvSeamFlags &attribute_seams : seams) {
-        draco_order_bits_.push_back(attribute_seams[edge] != 0);
-      }
-    }
     next_bit_ = 0;
-    return true;
+    return DecodeUvSeams(
+        UvSeamDracoCornerTable(decoder_impl_->GetCornerTable()),
+        num_attribute_data_, seam_data_, seam_size_, &draco_order_bits_);
   }
 
   // Called in Draco's seam order, like the encoder's EncodeAttributeSeam().
   bool DecodeAttributeSeam(int /* attribute */) {
     return next_bit_ < draco_order_bits_.size() &&
-           draco_order_bits_[next_bit_++];
+           draco_order_bits_[next_bit_++] != 0;
   }
 
  private:
@@ -96,7 +104,7 @@ class MeshEdgebreakerTraversalUvSeamDecoder : public TraversalDecoderT {
   int num_attribute_data_ = 0;
   const uint8_t *seam_data_ = nullptr;
   size_t seam_size_ = 0;
-  std::vector<bool> draco_order_bits_;
+  std::vector<uint8_t> draco_order_bits_;
   size_t next_bit_ = 0;
 };
 

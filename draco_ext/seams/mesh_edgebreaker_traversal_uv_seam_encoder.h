@@ -43,8 +43,8 @@ class MeshEdgebreakerTraversalUvSeamEncoder : public TraversalEncoderT {
     TraversalEncoderT::SetNumAttributeData(0);
   }
 
-  // Called in Draco's seam order (UvSeamTopology::DracoSeamOrder()), every
-  // attribute for one edge before the next edge.
+  // Called in Draco's seam order (see uv_seam_coder.h), every attribute
+  // for one edge before the next edge.
   void EncodeAttributeSeam(int /* attribute */, bool is_seam) {
     draco_order_bits_.push_back(is_seam);
   }
@@ -68,32 +68,15 @@ class MeshEdgebreakerTraversalUvSeamEncoder : public TraversalEncoderT {
   bool EncodeSeams(std::vector<uint8_t> *bytes) const {
     const MeshEdgebreakerEncoderImplInterface *const impl =
         this->encoder_impl();
-    std::vector<int32_t> opposite;
-    UvSeamTopology topology;
-    if (!OppositesInDecoderOrder(*impl->GetCornerTable(),
-                                 impl->GetProcessedConnectivityCorners(),
-                                 &opposite) ||
-        !topology.Init(opposite)) {
-      return false;
-    }
-    const std::vector<int32_t> order = topology.DracoSeamOrder();
-    if (draco_order_bits_.size() != order.size() * num_attribute_data_) {
-      return false;
-    }
-    std::vector<UvSeamFlags> seams(num_attribute_data_,
-                                   UvSeamFlags(topology.num_edges(), 0));
-    size_t bit = 0;
-    for (const int32_t edge : order) {
-      for (UvSeamFlags &attribute_seams : seams) {
-        attribute_seams[edge] = draco_order_bits_[bit++];
-      }
-    }
-    *bytes = EncodeUvSeams(topology, seams);
-    return true;
+    UvSeamCornerTable table;
+    return CornerTableInDecoderOrder(*impl->GetCornerTable(),
+                                     impl->GetProcessedConnectivityCorners(),
+                                     &table) &&
+           EncodeUvSeams(table, num_attribute_data_, draco_order_bits_, bytes);
   }
 
   int num_attribute_data_ = 0;
-  std::vector<bool> draco_order_bits_;
+  std::vector<uint8_t> draco_order_bits_;
 };
 
 typedef MeshEdgebreakerTraversalUvSeamEncoder<MeshEdgebreakerTraversalEncoder>

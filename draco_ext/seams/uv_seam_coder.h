@@ -20,59 +20,375 @@
 // describes it, and with arithmetic coding these bits beat the per-vertex
 // crease flags of Taubin et al. (1998) and Isenburg & Snoeyink (2000)
 // (eqs. 1-2, fig. 3). Draco's Edgebreaker codes exactly these bits, with one
-// static probability per attribute. This coder codes the same bits, in an
-// order and with contexts that follow the structure of seams:
+// static probability per attribute. This coder codes the same bits in
+// Draco's own order (faces in decoded order, each face's corners c, next(c),
+// previous(c), boundary edges and edges of earlier faces skipped, every
+// attribute of an edge before the next edge), so the decoder needs no
+// topology of its own: one pass over the corner table.
 //
-//  * Seams form chains: once a seam edge reaches a vertex, the chain almost
-//    always continues there. The coder walks the chains: it visits vertices
-//    in fan order, decides all undecided edges of a vertex, and when an edge
-//    turns out to be a seam it continues at the edge's other end (depth
-//    first) before resuming the scan.
-//  * Around a vertex, it first decides the edge farthest (in the ring) from
-//    the seams and boundaries already known there, where a continuing chain
-//    most likely leaves.
-//  * Each bit is predicted from what the decoder knows at that point: seams
-//    already decided at both ends, boundary flags, the ring distance class,
-//    undecided edges left at both ends, the decided state of the four other
-//    edges of the edge's two faces, the ring size, and whether an earlier
-//    attribute has a seam on the same edge (UV sets and per-corner normals
-//    often share seams). Three context models are mixed (UvSeamBitModel)
-//    and drive a range coder (UvSeamRangeCoder).
-//
-// Everything is integer arithmetic on the connectivity alone, decoded
-// before any attribute values; geometry (e.g. dihedral angles) would need
-// the seams decoded after the positions (see BENCHMARKS.md for what that
-// would be worth). The coder reproduces the bits exactly, so the decoded
-// seams, vertices and attribute values are those of stock Draco, including
-// Draco's treatment of complex and non-manifold vertices (it works on
-// Draco's own corner fans).
+// Seams form chains that end only at boundaries or where charts meet, so a
+// bit is predicted from what is known at the edge's two vertices when it is
+// coded: seams already decided there (one seam at a vertex almost always
+// continues), the vertex's undecided interior edges left (when one is left
+// after a lone seam, it is almost surely the continuation), whether the
+// vertex lies on a boundary, and for later attributes whether an earlier one
+// has a seam on the same edge (UV sets and per-corner normals often share
+// seams). Each context has one adaptive probability (a shift update that
+// starts fast, as in LZMA-like coders with a count-based warm-up), which
+// drives a binary range coder (uv_seam_range_coder.h). Everything is
+// integer arithmetic on the connectivity alone, so the decoded seams,
+// vertices and attribute values are exactly those of stock Draco.
 #ifndef DRACO_EXT_SEAMS_UV_SEAM_CODER_H_
 #define DRACO_EXT_SEAMS_UV_SEAM_CODER_H_
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
 
-#include "draco_ext/seams/uv_seam_topology.h"
+#include "draco/core/macros.h"
+#include "draco_ext/seams/uv_seam_range_coder.h"
 
 namespace draco {
 
-// Seam flags of one attribute, one byte (0 or 1) per edge of a topology.
-typedef std::vector<uint8_t> UvSeamFlags;
+// A corner table in the decoder's corner numbering, as plain arrays: what
+// the encoder and the evaluation tools code on.
+struct UvSeamCornerTable {
+  static constexpr uint32_t kBoundary = 0xFFFFFFFFu;
 
-// Codes the seams of every attribute (|seams|[i] has one flag per edge of
-// |topology|), then 14 check bits, and returns the coded bytes.
-std::vector<uint8_t> EncodeUvSeams(const UvSeamTopology &topology,
-                                   const std::vector<UvSeamFlags> &seams);
+  uint32_t num_corners() const {
+    return static_cast<uint32_t>(opposite.size());
+  }
+  uint32_t Opposite(uint32_t corner) const { return opposite[corner]; }
+  uint32_t Vertex(uint32_t corner) const { return vertex[corner]; }
 
-// Decodes |num_attributes| seam flag sets from |size| bytes at |data|;
-// false if the bytes are not a complete stream of EncodeUvSeams() for
-// |topology| and |num_attributes|: 14 check bits after the seams catch
-// altered bytes (all but a 2^-14 fraction of them), the range coder's tail
-// truncation and trailing bytes.
-bool DecodeUvSeams(const UvSeamTopology &topology, int num_attributes,
-                   const uint8_t *data, size_t size,
-                   std::vector<UvSeamFlags> *seams);
+  std::vector<uint32_t> opposite;  // kBoundary for none.
+  std::vector<uint32_t> vertex;
+  uint32_t num_vertices = 0;
+};
+
+// Zero bits coded at probability 1/2 after the seams: a corrupt stream
+// decodes them as zeros with probability 2^-14 only (the range coder's own
+// checks catch truncation and trailing bytes, not altered ones). 14 bits
+// rather than 16 keep the smallest meshes below stock Draco's seam bytes.
+constexpr int kUvSeamCheckBits = 14;
+
+// The seam bits of a corner table (TableT: num_corners(), Opposite(),
+// Vertex() and num_vertices, in uint32_t, kBoundary for no opposite), coded
+// in Draco's order with the contexts of the file comment. Encoder and
+// decoder run the same code; only BitIoT::Code() differs.
+template <class TableT>
+class UvSeamContextCoder {
+ public:
+  // False if a corner's vertex or opposite is out of range (corrupt
+  // connectivity).
+  bool Init(const TableT &table, int num_attributes);
+
+  // Interior edges that Draco codes a bit for, per attribute.
+  size_t num_edges() const { return num_edges_; }
+
+  // Codes num_edges() * num_attributes bits at |bits| (edge-major; read by
+  // the encoder, written by the decoder), then the check bits; false if a
+  // check bit decodes as one.
+  template <class BitIoT>
+  bool Code(BitIoT *io, uint8_t *bits) {
+    // One attribute (the common case) with a constant count.
+    const bool ok =
+        num_attributes_ == 1 ? CodeBits<1>(io, bits) : CodeBits<0>(io, bits);
+    bool checks_ok = true;
+    for (int i = 0; i < kUvSeamCheckBits; ++i) {
+      checks_ok = !io->Code(kUvSeamProbabilityOne / 2, false) && checks_ok;
+    }
+    return ok && checks_ok;
+  }
+
+ private:
+  // Code() for kNumAttributes attributes, or num_attributes_ if 0.
+  template <int kNumAttributes, class BitIoT>
+  bool CodeBits(BitIoT *io, uint8_t *bits);
+
+  // A vertex's state: undecided interior edges left (bits 1 and up) and
+  // whether it lies on a boundary (bit 0).
+  static constexpr uint32_t kOnBoundary = 1;
+  static constexpr uint32_t kOneEdge = 2;
+  // Ring steps to the nearest cut that are told apart: 1 to kMaxSteps, and
+  // farther.
+  static constexpr int kMaxSteps = 3;
+  // Unordered pairs of step counts in [1, kMaxSteps + 1].
+  static constexpr int kNumStepPairs = 10;
+  // An end of the edge without seams: undecided edges left and boundary
+  // (QuietEnd()). With seams (1, 2, 3+) also the steps to the nearest cut
+  // either way around the vertex.
+  static constexpr int kNumQuietEnds = 4 * 2;
+  static constexpr int kNumEnds = kNumQuietEnds + 3 * 4 * 2 * kNumStepPairs;
+  // The other end of the edge, without the steps.
+  static constexpr int kNumShortEnds = 4 * 4 * 2;
+  static constexpr int kNumEdgeContexts = kNumEnds * kNumShortEnds;
+
+  // One adaptive probability of a seam, in 1/65536, and how many bits it
+  // has seen (up to kMaxSeen).
+  struct Probability {
+    uint16_t p1 = 1u << 15;
+    uint16_t seen = 0;
+  };
+  static constexpr int kMaxSeen = 45;
+
+  static uint32_t Next(uint32_t c) { return c % 3 == 2 ? c - 2 : c + 1; }
+  static uint32_t Previous(uint32_t c) { return c % 3 == 0 ? c + 2 : c - 1; }
+
+  // True if the edge opposite |corner| is a boundary or a decided seam of
+  // the attribute whose corner flags are |seam_corners|.
+  bool IsCut(uint32_t corner, const uint8_t *seam_corners) const {
+    return table_->Opposite(corner) == TableT::kBoundary ||
+           seam_corners[corner] != 0;
+  }
+  // Steps around the vertex shared by the edges opposite |corner| and
+  // opposite its Previous() (kPrevious) or Next() corner, from the former
+  // to the first cut: 1 to kMaxSteps + 1 (farther).
+  template <bool kPrevious>
+  int StepsToCut(uint32_t corner, const uint8_t *seam_corners) const;
+  // Index among kNumStepPairs of the steps to the nearest cuts either way
+  // around the end of the edge opposite |corner| at Next(corner)
+  // (kAtNext) or Previous(corner); |opposite| is its opposite corner.
+  template <bool kAtNext>
+  int StepPair(uint32_t corner, uint32_t opposite,
+               const uint8_t *seam_corners) const;
+  // Context of an end without seams, from its state (2 * left + boundary,
+  // left >= 1): 1, 2 or 3 undecided edges left, each on a boundary or not,
+  // 4 left off the boundary, and more (found measurably better than
+  // splitting the last class by boundary).
+  static int QuietEnd(uint32_t state) {
+    static constexpr uint8_t kQuietEnd[10] = {0, 0, 0, 1, 2, 3, 4, 5, 6, 7};
+    return kQuietEnd[std::min<uint32_t>(state, 9)];
+  }
+  static int ShortEnd(uint32_t state, int seams) {
+    return std::min(seams, 3) * kNumQuietEnds + QuietEnd(state);
+  }
+  static int FullEnd(uint32_t state, int seams, int step_pair) {
+    return kNumQuietEnds +
+           ((std::min(seams, 3) - 1) * kNumQuietEnds + QuietEnd(state)) *
+               kNumStepPairs +
+           step_pair;
+  }
+  template <class BitIoT>
+  static bool CodeBit(BitIoT *io, Probability *probability, uint8_t *bit);
+
+  const TableT *table_ = nullptr;
+  int num_attributes_ = 0;
+  size_t num_edges_ = 0;
+  std::vector<uint32_t> vertex_state_;
+  std::vector<uint8_t> seams_at_;  // [attribute * num_vertices + vertex].
+  // [attribute * num_corners + corner]: 1 if the edge opposite the corner
+  // is a decided seam.
+  std::vector<uint8_t> seam_corners_;
+  // Attribute 0, then later attributes without and with an earlier seam on
+  // the same edge.
+  std::vector<Probability> probabilities_;
+};
+
+template <class TableT>
+bool UvSeamContextCoder<TableT>::Init(const TableT &table, int num_attributes) {
+  table_ = &table;
+  num_attributes_ = num_attributes;
+  num_edges_ = 0;
+  const uint32_t num_vertices = table.num_vertices;
+  const uint32_t num_corners = table.num_corners() / 3 * 3;
+  vertex_state_.assign(num_vertices, 0);
+  for (uint32_t first = 0; first < num_corners; first += 3) {
+    const uint32_t v[3] = {table.Vertex(first), table.Vertex(first + 1),
+                           table.Vertex(first + 2)};
+    if (std::max(v[0], std::max(v[1], v[2])) >= num_vertices) {
+      return false;
+    }
+    for (int i = 0; i < 3; ++i) {
+      const uint32_t opposite = table.Opposite(first + i);
+      const uint32_t a = v[i == 2 ? 0 : i + 1];
+      const uint32_t b = v[i == 0 ? 2 : i - 1];
+      if (opposite == TableT::kBoundary) {
+        vertex_state_[a] |= kOnBoundary;
+        vertex_state_[b] |= kOnBoundary;
+      } else if (opposite >= num_corners) {
+        return false;
+      } else if (opposite >= first) {  // Not an edge of an earlier face.
+        vertex_state_[a] += kOneEdge;
+        vertex_state_[b] += kOneEdge;
+        ++num_edges_;
+      }
+    }
+  }
+  seams_at_.assign(static_cast<size_t>(num_vertices) * num_attributes, 0);
+  seam_corners_.assign(static_cast<size_t>(num_corners) * num_attributes, 0);
+  probabilities_.assign(
+      num_attributes > 1 ? 3 * kNumEdgeContexts : kNumEdgeContexts,
+      Probability());
+  return true;
+}
+
+template <class TableT>
+template <bool kPrevious>
+int UvSeamContextCoder<TableT>::StepsToCut(uint32_t corner,
+                                           const uint8_t *seam_corners) const {
+  for (int steps = 1; steps <= kMaxSteps; ++steps) {
+    const uint32_t wing = kPrevious ? Previous(corner) : Next(corner);
+    if (IsCut(wing, seam_corners)) {
+      return steps;
+    }
+    corner = table_->Opposite(wing);  // Not a boundary: not a cut.
+  }
+  return kMaxSteps + 1;
+}
+
+template <class TableT>
+template <bool kAtNext>
+int UvSeamContextCoder<TableT>::StepPair(uint32_t corner, uint32_t opposite,
+                                         const uint8_t *seam_corners) const {
+  // The end is Next(corner) of the edge's face and Previous(opposite) of
+  // the opposite face, or the other way round.
+  int one_way = StepsToCut<kAtNext>(corner, seam_corners);
+  int other_way = StepsToCut<!kAtNext>(opposite, seam_corners);
+  if (one_way > other_way) {
+    std::swap(one_way, other_way);
+  }
+  static constexpr int kFirstPair[kMaxSteps + 1] = {0, 4, 7, 9};
+  return kFirstPair[one_way - 1] + other_way - one_way;
+}
+
+template <class TableT>
+template <class BitIoT>
+inline bool UvSeamContextCoder<TableT>::CodeBit(BitIoT *io,
+                                                Probability *probability,
+                                                uint8_t *bit) {
+  // 65536 * 2 / (2 * seen + 3): the rate of a count-based estimate, which
+  // settles at 1/46.5 (kMaxSeen).
+  static constexpr uint16_t kRate[kMaxSeen + 1] = {
+      43690, 26214, 18724, 14563, 11915, 10082, 8738, 7710, 6898, 6241,
+      5698,  5242,  4854,  4519,  4228,  3971,  3744, 3542, 3360, 3196,
+      3048,  2912,  2788,  2674,  2570,  2473,  2383, 2299, 2221, 2148,
+      2080,  2016,  1956,  1899,  1846,  1795,  1747, 1702, 1659, 1618,
+      1579,  1542,  1506,  1472,  1440,  1409};
+  const uint32_t p1 = probability->p1;
+  // p1 stays within [1, 65535]; | 1 keeps the coder's probability in
+  // [1, 4095].
+  const bool seam = io->Code((p1 >> 4) | 1, *bit != 0);
+  *bit = seam;
+  const uint32_t rate = kRate[probability->seen];
+  probability->seen += probability->seen < kMaxSeen;
+  probability->p1 = static_cast<uint16_t>(
+      seam ? p1 + (((65536u - p1) * rate) >> 16) : p1 - ((p1 * rate) >> 16));
+  return seam;
+}
+
+template <class TableT>
+template <int kNumAttributes, class BitIoT>
+bool UvSeamContextCoder<TableT>::CodeBits(BitIoT *io, uint8_t *bits) {
+  const TableT &table = *table_;
+  const int num_attributes =
+      kNumAttributes > 0 ? kNumAttributes : num_attributes_;
+  const size_t num_corners = table.num_corners() / 3 * 3;
+  const size_t num_vertices = table.num_vertices;
+  uint8_t *bit = bits;
+  for (uint32_t first = 0; first < num_corners; first += 3) {
+    const uint32_t v[3] = {table.Vertex(first), table.Vertex(first + 1),
+                           table.Vertex(first + 2)};
+    for (int i = 0; i < 3; ++i) {
+      const uint32_t corner = first + i;
+      const uint32_t opposite = table.Opposite(corner);
+      // Boundary edges and edges of earlier faces have no bit.
+      if (opposite == TableT::kBoundary || opposite < first) {
+        continue;
+      }
+      const uint32_t a = v[i == 2 ? 0 : i + 1];  // At Next(corner).
+      const uint32_t b = v[i == 0 ? 2 : i - 1];
+      const uint32_t state_a = vertex_state_[a];
+      const uint32_t state_b = vertex_state_[b];
+      DRACO_DCHECK(state_a >= kOneEdge && state_b >= kOneEdge);
+      uint8_t *const seams_a =
+          &seams_at_[static_cast<size_t>(a) * num_attributes];
+      uint8_t *const seams_b =
+          &seams_at_[static_cast<size_t>(b) * num_attributes];
+      bool earlier = false;
+      for (int attribute = 0; attribute < num_attributes; ++attribute) {
+        uint8_t *const seams = &seams_at_[attribute * num_vertices];
+        uint8_t *const seam_corners = &seam_corners_[attribute * num_corners];
+        const int seams_a = seams[a];
+        const int seams_b = seams[b];
+        // The more telling end in full, the other one short.
+        int context;
+        if ((seams_a | seams_b) == 0) {
+          const int end_a = QuietEnd(state_a);
+          const int end_b = QuietEnd(state_b);
+          context = end_a >= end_b ? end_a * kNumShortEnds + end_b
+                                   : end_b * kNumShortEnds + end_a;
+        } else {
+          const int end_a =
+              seams_a == 0
+                  ? QuietEnd(state_a)
+                  : FullEnd(state_a, seams_a,
+                            StepPair<true>(corner, opposite, seam_corners));
+          const int end_b =
+              seams_b == 0
+                  ? QuietEnd(state_b)
+                  : FullEnd(state_b, seams_b,
+                            StepPair<false>(corner, opposite, seam_corners));
+          context = end_a >= end_b
+                        ? end_a * kNumShortEnds + ShortEnd(state_b, seams_b)
+                        : end_b * kNumShortEnds + ShortEnd(state_a, seams_a);
+        }
+        const int plane = attribute == 0 ? 0 : 1 + earlier;
+        const bool seam = CodeBit(
+            io, &probabilities_[plane * kNumEdgeContexts + context], bit++);
+        if (seam) {
+          // Counts saturate (their contexts do at 3).
+          seams[a] = static_cast<uint8_t>(std::min(seams[a] + 1, 255));
+          seams[b] = static_cast<uint8_t>(std::min(seams[b] + 1, 255));
+          seam_corners[corner] = 1;
+          seam_corners[opposite] = 1;
+          earlier = true;
+        }
+      }
+      vertex_state_[a] -= kOneEdge;
+      vertex_state_[b] -= kOneEdge;
+    }
+  }
+  return true;
+}
+
+// Encodes |bits| (Draco's seam bits of |table|, edge-major, num_edges() *
+// |num_attributes|) with the check bits; false if their number is wrong or
+// the table is invalid.
+bool EncodeUvSeams(const UvSeamCornerTable &table, int num_attributes,
+                   const std::vector<uint8_t> &bits,
+                   std::vector<uint8_t> *bytes);
+
+// Bit I/O of the decoder for UvSeamContextCoder::Code().
+class UvSeamDecodingIo {
+ public:
+  UvSeamDecodingIo(const uint8_t *data, size_t size) : coder_(data, size) {}
+  bool Code(uint32_t probability_of_one, bool /* bit */) {
+    return coder_.DecodeBit(probability_of_one);
+  }
+  const UvSeamRangeDecoder &coder() const { return coder_; }
+
+ private:
+  UvSeamRangeDecoder coder_;
+};
+
+// Decodes the seam bits of |table| for |num_attributes| attributes from
+// |size| bytes at |data| into |bits| (edge-major, Draco's order); false if
+// the bytes are not a complete stream of EncodeUvSeams() for them: the
+// check bits catch altered bytes (all but a 2^-14 fraction of them), the
+// range coder's tail truncation and trailing bytes.
+template <class TableT>
+bool DecodeUvSeams(const TableT &table, int num_attributes, const uint8_t *data,
+                   size_t size, std::vector<uint8_t> *bits) {
+  UvSeamContextCoder<TableT> coder;
+  if (!coder.Init(table, num_attributes)) {
+    return false;
+  }
+  bits->resize(coder.num_edges() * num_attributes);
+  UvSeamDecodingIo io(data, size);
+  return coder.Code(&io, bits->data()) && io.coder().Finish();
+}
 
 }  // namespace draco
 

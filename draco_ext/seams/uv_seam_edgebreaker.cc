@@ -19,7 +19,6 @@
 #include "draco_ext/seams/uv_seam_edgebreaker.h"
 
 #include "draco/compression/config/compression_shared.h"
-#include "draco_ext/seams/uv_seam_topology.h"
 
 namespace draco {
 
@@ -28,44 +27,46 @@ bool IsUvSeamEdgebreakerMethod(int method) {
          method == MESH_EDGEBREAKER_VALENCE_CONTEXT_SEAMS_ENCODING;
 }
 
-bool OppositesInDecoderOrder(const CornerTable &table,
-                             const std::vector<CornerIndex> &face_corners,
-                             std::vector<int32_t> *opposite) {
+bool CornerTableInDecoderOrder(const CornerTable &table,
+                               const std::vector<CornerIndex> &face_corners,
+                               UvSeamCornerTable *decoder_table) {
+  constexpr uint32_t kNone = UvSeamCornerTable::kBoundary;
   // Decoder corner of every encoder corner of an encoded face.
-  std::vector<int32_t> decoder_corner(table.num_corners(),
-                                      UvSeamTopology::kBoundary);
+  std::vector<uint32_t> decoder_corner(table.num_corners(), kNone);
+  decoder_table->vertex.resize(3 * face_corners.size());
   for (size_t face = 0; face < face_corners.size(); ++face) {
     const CornerIndex first = face_corners[face];
     const CornerIndex corners[3] = {first, table.Next(first),
                                     table.Previous(first)};
     for (int i = 0; i < 3; ++i) {
-      decoder_corner[corners[i].value()] = static_cast<int32_t>(3 * face + i);
+      decoder_corner[corners[i].value()] = static_cast<uint32_t>(3 * face + i);
+      decoder_table->vertex[3 * face + i] = table.Vertex(corners[i]).value();
     }
   }
-  opposite->assign(3 * face_corners.size(), UvSeamTopology::kBoundary);
+  decoder_table->num_vertices = table.num_vertices();
+  decoder_table->opposite.assign(3 * face_corners.size(), kNone);
   for (CornerIndex c(0); c < table.num_corners(); ++c) {
-    const int32_t corner = decoder_corner[c.value()];
+    const uint32_t corner = decoder_corner[c.value()];
     const CornerIndex other = table.Opposite(c);
-    if (corner == UvSeamTopology::kBoundary || other == kInvalidCornerIndex) {
+    if (corner == kNone || other == kInvalidCornerIndex) {
       continue;
     }
-    (*opposite)[corner] = decoder_corner[other.value()];
-    if ((*opposite)[corner] == UvSeamTopology::kBoundary) {
+    decoder_table->opposite[corner] = decoder_corner[other.value()];
+    if (decoder_table->opposite[corner] == kNone) {
       return false;  // The opposite face was not encoded.
     }
   }
   return true;
 }
 
-std::vector<int32_t> OppositesOf(const CornerTable &table) {
-  std::vector<int32_t> opposite(table.num_corners());
+UvSeamCornerTable UvSeamCornerTableOf(const CornerTable &table) {
+  UvSeamCornerTable plain;
+  plain.num_vertices = table.num_vertices();
   for (CornerIndex c(0); c < table.num_corners(); ++c) {
-    const CornerIndex other = table.Opposite(c);
-    opposite[c.value()] = other == kInvalidCornerIndex
-                              ? UvSeamTopology::kBoundary
-                              : other.value();
+    plain.opposite.push_back(table.Opposite(c).value());
+    plain.vertex.push_back(table.Vertex(c).value());
   }
-  return opposite;
+  return plain;
 }
 
 }  // namespace draco

@@ -34,6 +34,7 @@
 #include "draco/compression/mesh/mesh_edgebreaker_decoder_impl_interface.h"
 #include "draco/compression/mesh/mesh_edgebreaker_encoder_impl_interface.h"
 #include "draco/mesh/corner_table.h"
+#include "draco_ext/seams/uv_seam_coder.h"
 
 namespace draco {
 
@@ -45,17 +46,16 @@ CreateUvSeamEdgebreakerEncoderImpl(int method);
 std::unique_ptr<MeshEdgebreakerDecoderImplInterface>
 CreateUvSeamEdgebreakerDecoderImpl(int method);
 
-// Opposite corners of the encoder's |table| renumbered to the decoder's
-// corners: face f of the decoder has the corners |face_corners|[f],
-// Next() and Previous() of it (MeshEdgebreakerEncoderImpl's processed
-// connectivity corners). False if an opposite corner lies outside those
-// faces.
-bool OppositesInDecoderOrder(const CornerTable &table,
-                             const std::vector<CornerIndex> &face_corners,
-                             std::vector<int32_t> *opposite);
+// The encoder's |table| renumbered to the decoder's corners: face f of the
+// decoder has the corners |face_corners|[f], Next() and Previous() of it
+// (MeshEdgebreakerEncoderImpl's processed connectivity corners). False if
+// an opposite corner lies outside those faces.
+bool CornerTableInDecoderOrder(const CornerTable &table,
+                               const std::vector<CornerIndex> &face_corners,
+                               UvSeamCornerTable *decoder_table);
 
-// Opposite corners of |table| (UvSeamTopology::kBoundary for none).
-std::vector<int32_t> OppositesOf(const CornerTable &table);
+// |table| as plain arrays.
+UvSeamCornerTable UvSeamCornerTableOf(const CornerTable &table);
 
 }  // namespace draco
 

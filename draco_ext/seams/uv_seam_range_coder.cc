@@ -20,8 +20,6 @@ namespace draco {
 
 namespace {
 
-constexpr uint32_t kTopValue = 1u << 24;  // Renormalise below this range.
-
 // The bound between the sub-intervals of 0 and 1.
 uint32_t SplitRange(uint32_t range, uint32_t probability_of_one) {
   DRACO_DCHECK(probability_of_one > 0 &&
@@ -54,7 +52,7 @@ void UvSeamRangeEncoder::EncodeBit(bool bit, uint32_t probability_of_one) {
   } else {
     range_ = bound;
   }
-  while (range_ < kTopValue) {
+  while (range_ < kUvSeamRangeTop) {
     range_ <<= 8;
     ShiftLow();
   }
@@ -96,30 +94,6 @@ UvSeamRangeDecoder::UvSeamRangeDecoder(const uint8_t *data, size_t size)
   for (int i = 0; i < 4; ++i) {
     code_ = (code_ << 8) | NextByte();
   }
-}
-
-uint8_t UvSeamRangeDecoder::NextByte() {
-  const uint8_t byte = position_ < size_ ? data_[position_] : 0;
-  ++position_;
-  return byte;
-}
-
-bool UvSeamRangeDecoder::DecodeBit(uint32_t probability_of_one) {
-  const uint32_t bound = SplitRange(range_, probability_of_one);
-  const bool bit = code_ >= bound;
-  if (bit) {
-    code_ -= bound;
-    low_ += bound;
-    range_ -= bound;
-  } else {
-    range_ = bound;
-  }
-  while (range_ < kTopValue) {
-    range_ <<= 8;
-    low_ <<= 8;
-    code_ = (code_ << 8) | NextByte();
-  }
-  return bit;
 }
 
 bool UvSeamRangeDecoder::Finish() const {

@@ -37,6 +37,8 @@ namespace draco {
 // Probabilities are P(bit == 1) in units of 1/4096, within [1, 4095].
 constexpr int kUvSeamProbabilityBits = 12;
 constexpr uint32_t kUvSeamProbabilityOne = 1u << kUvSeamProbabilityBits;
+// Both sides renormalise when the range falls below this.
+constexpr uint32_t kUvSeamRangeTop = 1u << 24;
 
 class UvSeamRangeEncoder {
  public:
@@ -66,14 +68,36 @@ class UvSeamRangeDecoder {
   // Starts decoding |size| bytes at |data|, which must outlive the decoder.
   UvSeamRangeDecoder(const uint8_t *data, size_t size);
 
-  bool DecodeBit(uint32_t probability_of_one);
+  // Inline: the seam decoder calls it once per interior edge.
+  bool DecodeBit(uint32_t probability_of_one) {
+    const uint32_t bound = (range_ >> kUvSeamProbabilityBits) *
+                           (kUvSeamProbabilityOne - probability_of_one);
+    const bool bit = code_ >= bound;
+    if (bit) {
+      code_ -= bound;
+      low_ += bound;
+      range_ -= bound;
+    } else {
+      range_ = bound;
+    }
+    while (range_ < kUvSeamRangeTop) {
+      range_ <<= 8;
+      low_ <<= 8;
+      code_ = (code_ << 8) | NextByte();
+    }
+    return bit;
+  }
 
   // True if the stream ends exactly with the tail the encoder writes after
   // the bits decoded so far, and has no bytes beyond it.
   bool Finish() const;
 
  private:
-  uint8_t NextByte();
+  uint8_t NextByte() {
+    const uint8_t byte = position_ < size_ ? data_[position_] : 0;
+    ++position_;
+    return byte;
+  }
 
   const uint8_t *data_;
   size_t size_;

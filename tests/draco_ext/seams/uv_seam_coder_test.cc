@@ -42,25 +42,34 @@ std::vector<UvSeamProblem> DracoTestdataProblems() {
   return problems;
 }
 
-bool RoundTrips(const UvSeamTopology &topology,
-                const std::vector<UvSeamFlags> &seams) {
-  const std::vector<uint8_t> bytes = EncodeUvSeams(topology, seams);
-  std::vector<UvSeamFlags> decoded;
-  return DecodeUvSeams(topology, static_cast<int>(seams.size()), bytes.data(),
-                       bytes.size(), &decoded) &&
-         decoded == seams;
+// Seam bits of |num_attributes| attributes for the edges of |table|.
+size_t NumBits(const UvSeamCornerTable &table, int num_attributes) {
+  UvSeamContextCoder<UvSeamCornerTable> coder;
+  EXPECT_TRUE(coder.Init(table, num_attributes));
+  return coder.num_edges() * num_attributes;
+}
+
+bool RoundTrips(const UvSeamCornerTable &table, int num_attributes,
+                const std::vector<uint8_t> &bits) {
+  std::vector<uint8_t> bytes;
+  std::vector<uint8_t> decoded;
+  return EncodeUvSeams(table, num_attributes, bits, &bytes) &&
+         DecodeUvSeams(table, num_attributes, bytes.data(), bytes.size(),
+                       &decoded) &&
+         decoded == bits;
 }
 
 TEST(UvSeamCoderTest, RoundTripsTheSeamsOfDracoTestdata) {
   const std::vector<UvSeamProblem> problems = DracoTestdataProblems();
   ASSERT_GE(problems.size(), 20u);
   for (const UvSeamProblem &problem : problems) {
-    EXPECT_TRUE(RoundTrips(problem.topology, problem.seams));
+    EXPECT_TRUE(
+        RoundTrips(problem.table, problem.num_attributes, problem.bits));
   }
 }
 
 // Random seams (independent, and later attributes partly copying earlier
-// ones) on real topologies: nothing in the coder relies on seams being
+// ones) on real connectivity: nothing in the coder relies on seams being
 // plausible.
 TEST(UvSeamCoderTest, RoundTripsArbitrarySeamSetsOfSeveralAttributes) {
   std::mt19937 random(7);
@@ -68,15 +77,20 @@ TEST(UvSeamCoderTest, RoundTripsArbitrarySeamSetsOfSeveralAttributes) {
        {"cube_att.obj", "sphere.obj", "bun_zipper.ply", "octagon.obj"}) {
     const auto mesh = ReadDracoTestMesh(name);
     ASSERT_NE(mesh, nullptr);
-    const UvSeamTopology topology = TopologyOf(*mesh);
-    for (const int percent : {0, 2, 30, 100}) {
-      std::vector<UvSeamFlags> seams(3, UvSeamFlags(topology.num_edges()));
-      for (int32_t e = 0; e < topology.num_edges(); ++e) {
-        seams[0][e] = static_cast<int>(random() % 100) < percent;
-        seams[1][e] = random() % 4 == 0 ? !seams[0][e] : seams[0][e];
-        seams[2][e] = random() % 2;
+    const UvSeamCornerTable table = CornerTableOf(*mesh);
+    for (const int num_attributes : {1, 3}) {
+      for (const int percent : {0, 2, 30, 100}) {
+        std::vector<uint8_t> bits(NumBits(table, num_attributes));
+        for (size_t i = 0; i < bits.size(); ++i) {
+          const int attribute = static_cast<int>(i % num_attributes);
+          bits[i] = attribute == 0 ? static_cast<int>(random() % 100) < percent
+                    : attribute == 1
+                        ? (random() % 4 == 0 ? !bits[i - 1] : bits[i - 1])
+                        : random() % 2;
+        }
+        EXPECT_TRUE(RoundTrips(table, num_attributes, bits))
+            << name << " " << num_attributes << " " << percent;
       }
-      EXPECT_TRUE(RoundTrips(topology, seams)) << name << " " << percent;
     }
   }
 }
@@ -84,11 +98,28 @@ TEST(UvSeamCoderTest, RoundTripsArbitrarySeamSetsOfSeveralAttributes) {
 TEST(UvSeamCoderTest, HandlesMeshesWithoutAttributesOrInteriorEdges) {
   const auto mesh = ReadDracoTestMesh("multiple_isolated_triangles.obj");
   ASSERT_NE(mesh, nullptr);
-  const UvSeamTopology topology = TopologyOf(*mesh);
-  EXPECT_EQ(topology.num_edges(), 0);
-  EXPECT_TRUE(RoundTrips(topology, {}));
-  EXPECT_TRUE(RoundTrips(topology, {UvSeamFlags(), UvSeamFlags()}));
-  EXPECT_TRUE(EncodeUvSeams(topology, {UvSeamFlags()}).empty());
+  const UvSeamCornerTable table = CornerTableOf(*mesh);
+  EXPECT_EQ(NumBits(table, 1), 0u);
+  EXPECT_TRUE(RoundTrips(table, 0, {}));
+  EXPECT_TRUE(RoundTrips(table, 2, {}));
+  std::vector<uint8_t> bytes;
+  ASSERT_TRUE(EncodeUvSeams(table, 1, {}, &bytes));
+  EXPECT_TRUE(bytes.empty());
+  // Bits of edges the table does not have.
+  EXPECT_FALSE(EncodeUvSeams(table, 1, {0}, &bytes));
+}
+
+TEST(UvSeamCoderTest, RejectsTablesWithCornersOutOfRange) {
+  const auto mesh = ReadDracoTestMesh("cube_att.obj");
+  ASSERT_NE(mesh, nullptr);
+  const UvSeamCornerTable table = CornerTableOf(*mesh);
+  std::vector<uint8_t> decoded;
+  UvSeamCornerTable bad_vertex = table;
+  bad_vertex.vertex[5] = bad_vertex.num_vertices;
+  EXPECT_FALSE(DecodeUvSeams(bad_vertex, 1, nullptr, 0, &decoded));
+  UvSeamCornerTable bad_opposite = table;
+  bad_opposite.opposite[4] = static_cast<uint32_t>(table.num_corners());
+  EXPECT_FALSE(DecodeUvSeams(bad_opposite, 1, nullptr, 0, &decoded));
 }
 
 TEST(UvSeamCoderTest, RejectsEveryAlteredOrTruncatedStream) {
@@ -97,28 +128,28 @@ TEST(UvSeamCoderTest, RejectsEveryAlteredOrTruncatedStream) {
   const auto problem = BuildUvSeamProblem(*mesh, {14, 12, 10});
   ASSERT_TRUE(problem.ok());
   const UvSeamProblem &p = problem.value();
-  const int num_attributes = static_cast<int>(p.seams.size());
-  ASSERT_GE(num_attributes, 2);
-  const std::vector<uint8_t> bytes = EncodeUvSeams(p.topology, p.seams);
+  ASSERT_GE(p.num_attributes, 2);
+  std::vector<uint8_t> bytes;
+  ASSERT_TRUE(EncodeUvSeams(p.table, p.num_attributes, p.bits, &bytes));
   ASSERT_GE(bytes.size(), 8u);
-  std::vector<UvSeamFlags> decoded;
+  std::vector<uint8_t> decoded;
   for (size_t i = 0; i < bytes.size(); ++i) {
     for (const uint8_t flip : {0x01, 0x80, 0xFF}) {
       std::vector<uint8_t> altered = bytes;
       altered[i] ^= flip;
-      EXPECT_FALSE(DecodeUvSeams(p.topology, num_attributes, altered.data(),
+      EXPECT_FALSE(DecodeUvSeams(p.table, p.num_attributes, altered.data(),
                                  altered.size(), &decoded))
           << "byte " << i;
     }
     // (No bytes at all is the valid stream of a mesh without seams.)
     if (i > 0) {
       EXPECT_FALSE(
-          DecodeUvSeams(p.topology, num_attributes, bytes.data(), i, &decoded))
+          DecodeUvSeams(p.table, p.num_attributes, bytes.data(), i, &decoded))
           << "first " << i << " bytes";
     }
   }
   // A stream of other attributes does not decode either.
-  EXPECT_FALSE(DecodeUvSeams(p.topology, num_attributes - 1, bytes.data(),
+  EXPECT_FALSE(DecodeUvSeams(p.table, p.num_attributes - 1, bytes.data(),
                              bytes.size(), &decoded));
 }
 

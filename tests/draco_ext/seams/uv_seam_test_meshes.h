@@ -12,8 +12,8 @@
 // See the License for the specific language governing permissions and
 // limitations under the License.
 //
-// Meshes of Draco's testdata and their seam topology, shared by the tests
-// of the seam topology and of the seam coder.
+// Meshes of Draco's testdata and their corner tables, shared by the tests
+// of the seam coder.
 #ifndef DRACO_UV_TESTS_DRACO_EXT_SEAMS_UV_SEAM_TEST_MESHES_H_
 #define DRACO_UV_TESTS_DRACO_EXT_SEAMS_UV_SEAM_TEST_MESHES_H_
 
@@ -22,21 +22,20 @@
 
 #include "draco/mesh/mesh.h"
 #include "draco/mesh/mesh_misc_functions.h"
+#include "draco_ext/seams/uv_seam_coder.h"
 #include "draco_ext/seams/uv_seam_edgebreaker.h"
-#include "draco_ext/seams/uv_seam_topology.h"
 #include "gtest/gtest.h"
 #include "tests/draco_uv_test_utils.h"
 
 namespace draco {
 
-// The seam topology of |mesh|'s position connectivity; a test failure if
-// it cannot be built.
-inline UvSeamTopology TopologyOf(const Mesh &mesh) {
-  UvSeamTopology topology;
+// The corner table of |mesh|'s position connectivity; a test failure if it
+// cannot be built.
+inline UvSeamCornerTable CornerTableOf(const Mesh &mesh) {
   const std::unique_ptr<CornerTable> table =
       CreateCornerTableFromPositionAttribute(&mesh);
-  EXPECT_TRUE(table != nullptr && topology.Init(OppositesOf(*table)));
-  return topology;
+  EXPECT_TRUE(table != nullptr);
+  return table == nullptr ? UvSeamCornerTable() : UvSeamCornerTableOf(*table);
 }
 
 // Mesh |name| of Draco's testdata; null, and a test failure, if it does
