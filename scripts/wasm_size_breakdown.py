@@ -25,8 +25,8 @@ CATEGORIES = [
      r'UvSeam|DecodeUvSeams|EncodeUvSeams|SeamBit|Opposites'),
     ('weighted prediction',
      r'Weighted|UvStencil|UvComputedFrame|UvLookahead|UvProcessingOrder|'
-     r'uv_order_internal|uv_prediction_internal|UvMeanOfQ16|BuildStencils|'
-     r'BuildNeighbours|BuildMaxDegreeOrder'),
+     r'uv_order_internal|uv_prediction_internal|UvMeanOfQ16|'
+     r'BuildMaxDegreeOrder'),
     ('residual coder', r'UvResidual'),
     ('Draco Edgebreaker instances', r'Edgebreaker'),
     ('Draco prediction scheme factories', r'PredictionScheme'),

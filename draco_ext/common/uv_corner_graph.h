@@ -24,6 +24,8 @@
 #include <vector>
 
 #include "draco/attributes/geometry_indices.h"
+#include "draco/mesh/corner_table.h"
+#include "draco/mesh/mesh_attribute_corner_table.h"
 
 namespace draco {
 
@@ -61,6 +63,18 @@ struct UvCornerGraph {
   int32_t RightCorner(int32_t corner) const { return opposite[Next(corner)]; }
 };
 
+namespace uv_corner_graph_internal {
+
+// The position connectivity, in which Draco's encoder drops degenerate faces.
+inline const CornerTable &PositionTable(const CornerTable &table) {
+  return table;
+}
+inline const CornerTable &PositionTable(const MeshAttributeCornerTable &table) {
+  return *table.corner_table();
+}
+
+}  // namespace uv_corner_graph_internal
+
 // Copies the connectivity of |mesh_data| (a MeshPredictionSchemeData).
 // Entries outside [0, number of entries) become kNone. So do all corners of
 // faces that are degenerate in the position connectivity (two corners on one
@@ -73,11 +87,15 @@ void BuildUvCornerGraph(const MeshDataT &mesh_data, UvCornerGraph *graph) {
   const int32_t num_entries =
       static_cast<int32_t>(mesh_data.data_to_corner_map()->size());
   const int num_corners = table.num_corners();
-  // One degeneracy test per face (CornerTable::IsDegenerated() is not
-  // inlined), read by each of its corners and by its opposite corners.
+  // One degeneracy test per face, read by each of its corners and by its
+  // opposite corners: CornerTable::IsDegenerated() inlined (it is not).
+  const CornerTable &positions = uv_corner_graph_internal::PositionTable(table);
   std::vector<uint8_t> dropped(num_corners / 3);
   for (int f = 0; f < num_corners / 3; ++f) {
-    dropped[f] = table.IsDegenerated(FaceIndex(f));
+    const VertexIndex v0 = positions.Vertex(CornerIndex(3 * f));
+    const VertexIndex v1 = positions.Vertex(CornerIndex(3 * f + 1));
+    const VertexIndex v2 = positions.Vertex(CornerIndex(3 * f + 2));
+    dropped[f] = v0 == v1 || v0 == v2 || v1 == v2;
   }
   graph->entry.resize(num_corners);
   graph->opposite.resize(num_corners);

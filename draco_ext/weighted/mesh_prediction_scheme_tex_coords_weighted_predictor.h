@@ -27,6 +27,7 @@
 #ifndef DRACO_EXT_WEIGHTED_MESH_PREDICTION_SCHEME_TEX_COORDS_WEIGHTED_PREDICTOR_H_
 #define DRACO_EXT_WEIGHTED_MESH_PREDICTION_SCHEME_TEX_COORDS_WEIGHTED_PREDICTOR_H_
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <cstring>
@@ -81,8 +82,7 @@ struct UvComputedFrame {
 // Fallbacks: no stencil (the first two vertices of a chart, degenerate
 // fans): the latest known neighbour, else the previously processed entry,
 // else zero. Stencils with a degenerate 3D edge or extreme coefficients
-// predict the midpoint of LR. A vertex with more than kMaxStencils stencils
-// uses those with the earliest L and R.
+// predict the midpoint of LR.
 //
 // Weak on layouts unrelated to the geometry (hand-made, mirrored or packed
 // islands) and on chart starts, which are pure deltas; many-chart atlases
@@ -96,8 +96,6 @@ struct UvComputedFrame {
 template <typename DataTypeT>
 class MeshPredictionSchemeTexCoordsWeightedPredictor {
  public:
-  // Bounds the weighted sums of Q16 predictions (< 2^52 each) below 2^63.
-  static constexpr int kMaxStencils = 1024;
   static constexpr int kNumCandidates = 5;
 
   void SetPositionAttribute(const PointAttribute &position_attribute) {
@@ -123,11 +121,11 @@ class MeshPredictionSchemeTexCoordsWeightedPredictor {
   // Computes predicted_value() and context() for the entry at |step| of the
   // order from its stencils and known neighbours (both lists must stay valid
   // until Update()); |data| holds the values of all earlier steps' entries.
-  // |frames| is null or holds ComputeFrame() of each stencil (then at most
-  // kMaxStencils of them).
+  // |frames| holds ComputeFrame() of each of the (at most
+  // UvStencilPlan::kMaxStencils) stencils.
   void Predict(int step, const Stencil *stencils, int num_stencils,
                const int32_t *neighbours, int num_neighbours,
-               const DataTypeT *data, const UvComputedFrame *frames = nullptr);
+               const DataTypeT *data, const UvComputedFrame *frames);
 
   // Records the value (now in |data|) and the correction of the entry just
   // predicted at |step|.
@@ -172,12 +170,10 @@ class MeshPredictionSchemeTexCoordsWeightedPredictor {
   // Sets positions_ from |value|(entry, component), shifted as documented.
   template <class ValueT>
   void ShiftPositions(ValueT value);
-  void SelectStencils(const Stencil *stencils, int num_stencils);
   int OrientationFor(const Uv &f, const Uv &g, bool has_b);
   void PredictStencil(const Stencil &stencil, const UvComputedFrame &frame,
                       const DataTypeT *data, Uv *affine, Uv *similarity);
-  void ComputeCandidates(int32_t tip, const DataTypeT *data,
-                         const UvComputedFrame *frames);
+  void ComputeCandidates(const DataTypeT *data, const UvComputedFrame *frames);
   void ComputeCandidatesOfOneStencil(const UvComputedFrame &frame,
                                      const DataTypeT *data);
   void ComputeFallback(int step, const DataTypeT *data);
@@ -195,9 +191,12 @@ class MeshPredictionSchemeTexCoordsWeightedPredictor {
   std::vector<Pos> positions_;
   // Per entry: |correction| summed over both components (saturated).
   std::vector<uint32_t> magnitude_;
-  // Candidates 0 .. num_candidates_ - 1 exist: the reach kinds have no
-  // agreement weighting (one stencil has nothing to agree with).
-  int num_candidates_ = kNumCandidates;
+  // The candidates the kind chooses from, kMeanOfBoth first: the reach
+  // kinds have no agreement weighting (one stencil has nothing to agree
+  // with); the other kinds leave out kParallelogramMean, which the adaptive
+  // choice picks for few vertices (corpus sizes +0.1 % with it left out).
+  std::array<int, kNumCandidates> active_candidates_ = {};
+  int num_active_ = 0;
   // Per candidate: the recent prediction errors, decaying (adaptive kinds).
   std::array<uint64_t, kNumCandidates> recent_error_ = {};
   // Orientation the opposite vertices of the last step that had any gave
@@ -210,7 +209,6 @@ class MeshPredictionSchemeTexCoordsWeightedPredictor {
   int num_stencils_ = 0;
   const int32_t *neighbours_ = nullptr;
   int num_neighbours_ = 0;
-  std::vector<Stencil> selected_stencils_;  // Only for very long rows.
   std::array<Uv, kNumCandidates> candidates_;  // Rounded to texture units.
   DataTypeT predicted_value_[kUvNumComponents] = {};
   int context_ = 0;
@@ -277,36 +275,12 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::Start(
   num_entries_ = static_cast<int>(order.rank.size());
   CachePositions();
   magnitude_.assign(num_entries_, 0);
-  num_candidates_ = UsesReachStencil(kind) ? kAgreement : kNumCandidates;
+  active_candidates_ = {kMeanOfBoth, kAffineMean, kSimilarityMean,
+                        UsesReachStencil(kind) ? kParallelogramMean : kAgreement};
+  num_active_ = 4;
   recent_error_.fill(0);
   last_orientation_ = 1;
   step_orientation_sum_ = 0;
-}
-
-template <typename DataTypeT>
-void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::SelectStencils(
-    const Stencil *stencils, int num_stencils) {
-  stencils_ = stencils;
-  num_stencils_ = num_stencils;
-  if (num_stencils_ <= kMaxStencils) {
-    return;
-  }
-  // Row order differs between encoder and decoder: select by ranks.
-  const auto &rank = order_->rank;
-  selected_stencils_.assign(stencils_, stencils_ + num_stencils_);
-  std::nth_element(selected_stencils_.begin(),
-                   selected_stencils_.begin() + kMaxStencils,
-                   selected_stencils_.end(),
-                   [&](const Stencil &a, const Stencil &b) {
-                     const auto key = [&](const Stencil &s) {
-                       return std::make_tuple(
-                           rank[s.l], rank[s.r],
-                           s.b == UvCornerGraph::kNone ? -1 : rank[s.b]);
-                     };
-                     return key(a) < key(b);
-                   });
-  stencils_ = selected_stencils_.data();
-  num_stencils_ = kMaxStencils;
 }
 
 template <typename DataTypeT>
@@ -365,57 +339,37 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::PredictStencil(
 
 template <typename DataTypeT>
 void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::
-    ComputeCandidates(int32_t tip, const DataTypeT *data,
-                      const UvComputedFrame *frames) {
+    ComputeCandidates(const DataTypeT *data, const UvComputedFrame *frames) {
   if (num_stencils_ == 1) {
-    ComputeCandidatesOfOneStencil(
-        frames != nullptr ? frames[0] : ComputeFrame(stencils_[0], tip), data);
+    ComputeCandidatesOfOneStencil(frames[0], data);
     return;
   }
-  // The adaptive kinds need every candidate (for the errors they learn
-  // from); the agreement weight needs several stencils to matter.
-  const bool all_candidates = IsAdaptive();
-  const bool agreement = !UsesReachStencil(kind_);
-  Uv affine_sum(0, 0), similarity_sum(0, 0), parallelogram_sum(0, 0);
-  Uv agreement_sum(0, 0);
+  // Only the multi-stencil kinds have several stencils. The mean
+  // parallelogram is not one of their candidates (active_candidates_).
+  DRACO_DCHECK(!UsesReachStencil(kind_));
+  Uv affine_sum(0, 0), similarity_sum(0, 0), agreement_sum(0, 0);
   int64_t weight_sum = 0;
-  int num_parallelograms = 0;
   for (int i = 0; i < num_stencils_; ++i) {
-    const Stencil &stencil = stencils_[i];
     Uv affine, similarity;
-    PredictStencil(stencil,
-                   frames != nullptr ? frames[i] : ComputeFrame(stencil, tip),
-                   data, &affine, &similarity);
+    PredictStencil(stencils_[i], frames[i], data, &affine, &similarity);
     affine_sum = affine_sum + affine;
     similarity_sum = similarity_sum + similarity;
-    if (all_candidates && stencil.b != UvCornerGraph::kNone) {
-      parallelogram_sum =
-          parallelogram_sum +
-          PredictParallelogramQ16(UvOf(data, stencil.l), UvOf(data, stencil.r),
-                                  UvOf(data, stencil.b));
-      ++num_parallelograms;
-    }
-    if (agreement) {
-      const int64_t weight = UvAgreementWeight(affine, similarity);
-      weight_sum += weight;
-      agreement_sum = agreement_sum + (affine + similarity) / 2 * weight;
-    }
+    const int64_t weight = UvAgreementWeight(affine, similarity);
+    weight_sum += weight;
+    agreement_sum = agreement_sum + (affine + similarity) / 2 * weight;
   }
   candidates_[kMeanOfBoth] =
       UvMeanOfQ16(affine_sum + similarity_sum, 2 * num_stencils_);
   candidates_[kAgreement] =
-      agreement && weight_sum > 0
+      weight_sum > 0
           ? Uv(RoundedDivide(agreement_sum[0], weight_sum * kUvStencilOne),
                RoundedDivide(agreement_sum[1], weight_sum * kUvStencilOne))
           : candidates_[kMeanOfBoth];
-  if (!all_candidates) {
+  if (!IsAdaptive()) {
     return;
   }
   candidates_[kAffineMean] = UvMeanOfQ16(affine_sum, num_stencils_);
   candidates_[kSimilarityMean] = UvMeanOfQ16(similarity_sum, num_stencils_);
-  candidates_[kParallelogramMean] =
-      num_parallelograms > 0 ? UvMeanOfQ16(parallelogram_sum, num_parallelograms)
-                             : candidates_[kMeanOfBoth];
 }
 
 // ComputeCandidates() for a single stencil (every vertex of the reach kinds
@@ -471,7 +425,8 @@ int MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::ChooseCandidate()
     return kMeanOfBoth;
   }
   int best = kMeanOfBoth;
-  for (int k = 1; k < num_candidates_; ++k) {
+  for (int i = 1; i < num_active_; ++i) {
+    const int k = active_candidates_[i];
     if (recent_error_[k] < recent_error_[best]) {
       best = k;
     }
@@ -500,14 +455,15 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::Predict(
     int step, const Stencil *stencils, int num_stencils,
     const int32_t *neighbours, int num_neighbours, const DataTypeT *data,
     const UvComputedFrame *frames) {
-  DRACO_DCHECK(frames == nullptr || num_stencils <= kMaxStencils);
-  SelectStencils(stencils, num_stencils);
+  DRACO_DCHECK(num_stencils <= UvStencilPlan::kMaxStencils);
+  stencils_ = stencils;
+  num_stencils_ = num_stencils;
   neighbours_ = neighbours;
   num_neighbours_ = num_neighbours;
   if (num_stencils_ == 0) {
     ComputeFallback(step, data);
   } else {
-    ComputeCandidates(order_->entries[step], data, frames);
+    ComputeCandidates(data, frames);
   }
   const Uv &chosen = candidates_[ChooseCandidate()];
   for (int i = 0; i < kUvNumComponents; ++i) {
@@ -536,7 +492,8 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::Update(
   if (IsAdaptive()) {
     // Exponentially decaying error sums (weight 15/16 per step): below
     // 16 * 2^21.
-    for (int k = 0; k < num_candidates_; ++k) {
+    for (int i = 0; i < num_active_; ++i) {
+      const int k = active_candidates_[i];
       const Uv error = value - candidates_[k];
       recent_error_[k] += std::min(AbsAsUnsigned(error[0]), kMaxError) +
                           std::min(AbsAsUnsigned(error[1]), kMaxError) -
@@ -688,30 +645,30 @@ bool RunReachPrediction(
   return true;
 }
 
-// The frames of |plan|'s stencils |begin| .. |end|, whose tips are the
-// entries of |order|'s steps.
+// What a step of a multi-stencil order needs from the connectivity and
+// the positions alone, so that it can be computed ahead (UvLookahead).
+struct PlanStep {
+  UvStencilPlan plan;
+  UvComputedFrame frames[UvStencilPlan::kMaxStencils];
+};
+
 template <typename DataTypeT>
-void ComputePlanFrames(
-    const UvStencilPlan &plan, const UvProcessingOrder &order,
+void ComputePlanSteps(
+    const UvStencilPlanner &planner, const UvProcessingOrder &order,
     const MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT> &predictor,
-    int begin, int end, UvComputedFrame *out) {
-  // The step of stencil |begin|: the last one whose row starts at or before.
-  int step =
-      static_cast<int>(std::upper_bound(plan.stencil_begin.begin(),
-                                        plan.stencil_begin.end(), begin) -
-                       plan.stencil_begin.begin()) -
-      1;
-  for (int i = begin; i < end; ++i) {
-    while (plan.stencil_begin[step + 1] <= i) {
-      ++step;
+    int begin, int end, PlanStep *out) {
+  for (int step = begin; step < end; ++step, ++out) {
+    planner.Build(step, &out->plan);
+    for (int i = 0; i < out->plan.num_stencils; ++i) {
+      out->frames[i] =
+          predictor.ComputeFrame(out->plan.stencils[i], order.entries[step]);
     }
-    *out++ = predictor.ComputeFrame(plan.stencils[i], order.entries[step]);
   }
 }
 
-// RunUvPrediction() for the kinds that use every stencil of a
-// UvStencilPlan: the stencils' frames are computed ahead, on a second
-// thread if allowed.
+// RunUvPrediction() for the kinds that use every stencil (up to
+// UvStencilPlan::kMaxStencils) of a vertex: the stencils and their frames
+// are computed ahead, on a second thread if allowed.
 template <typename DataTypeT, class MeshDataT, class ProcessT>
 bool RunPlanPrediction(
     const MeshDataT &mesh_data, const UvPredictionConfig &config,
@@ -727,29 +684,19 @@ bool RunPlanPrediction(
   } else {
     BuildDataOrder(data_to_corner, &order);
   }
-  UvStencilPlan plan;
-  BuildUvStencilPlan(graph, order, &plan);
   predictor->Start(config.kind, order);
-  const int num_stencils = static_cast<int>(plan.stencils.size());
-  UvLookahead<UvComputedFrame> frames(
-      num_stencils, UseLookaheadThread(*predictor, num_stencils),
-      [&](int begin, int end, UvComputedFrame *out) {
-        ComputePlanFrames(plan, order, *predictor, begin, end, out);
+  const UvStencilPlanner planner(graph, order);
+  const int num_steps = static_cast<int>(order.entries.size());
+  UvLookahead<PlanStep> steps(
+      num_steps, UseLookaheadThread(*predictor, num_steps),
+      [&](int begin, int end, PlanStep *out) {
+        ComputePlanSteps(planner, order, *predictor, begin, end, out);
       });
-  std::vector<UvComputedFrame> step_frames;
-  for (int step = 0; step < static_cast<int>(order.entries.size()); ++step) {
-    const int s0 = plan.stencil_begin[step], s1 = plan.stencil_begin[step + 1];
-    const int n0 = plan.neighbour_begin[step];
-    // Rows longer than kMaxStencils are cut by rank inside Predict().
-    const bool with_frames = s1 - s0 <= predictor->kMaxStencils;
-    step_frames.clear();
-    for (int i = s0; with_frames && i < s1; ++i) {
-      step_frames.push_back(frames.Get(i));
-    }
-    predictor->Predict(step, plan.stencils.data() + s0, s1 - s0,
-                       plan.neighbours.data() + n0,
-                       plan.neighbour_begin[step + 1] - n0, data,
-                       with_frames ? step_frames.data() : nullptr);
+  for (int step = 0; step < num_steps; ++step) {
+    const PlanStep &s = steps.Get(step);
+    predictor->Predict(step, s.plan.stencils, s.plan.num_stencils,
+                       s.plan.neighbours, s.plan.num_neighbours, data,
+                       s.frames);
     if (!process(step, order.entries[step])) {
       return false;
     }
