@@ -115,6 +115,8 @@ class MeshPredictionSchemeTexCoordsWeightedPredictor {
 
   // Prepares one pass over the entries of |order|, which must outlive it.
   void Start(UvPredictorKind kind, const UvProcessingOrder &order);
+  // Start() for the reach kinds, whose order is Draco's entry order.
+  void StartReach(UvPredictorKind kind, int num_entries);
 
   // The frame of |stencil| with tip |tip|. Reads only the positions cached
   // by Start(), so other threads may call it during a pass.
@@ -128,6 +130,12 @@ class MeshPredictionSchemeTexCoordsWeightedPredictor {
   void Predict(int step, const Stencil *stencils, int num_stencils,
                const int32_t *neighbours, int num_neighbours,
                const DataTypeT *data, const UvComputedFrame *frames = nullptr);
+
+  // Predict() for the reach kinds (after StartReach()) at entry |p|: the
+  // candidates of |stencil| and its |frame| when |num_stencils| is 1, else
+  // the fallback; the known vertices of |stencil| are the neighbours.
+  void PredictReach(int p, const Stencil &stencil, int num_stencils,
+                    const UvComputedFrame &frame, const DataTypeT *data);
 
   // Records the value (now in |data|) and the correction of the entry just
   // predicted at |step|.
@@ -181,6 +189,9 @@ class MeshPredictionSchemeTexCoordsWeightedPredictor {
   void ComputeCandidatesOfOneStencil(const UvComputedFrame &frame,
                                      const DataTypeT *data);
   void ComputeFallback(int step, const DataTypeT *data);
+  void ComputeReachFallback(int p, const Stencil &stencil,
+                            const DataTypeT *data);
+  void ComputeReachContext(const Stencil &stencil);
   int ChooseCandidate() const;
   void ComputeContext();
 
@@ -191,7 +202,7 @@ class MeshPredictionSchemeTexCoordsWeightedPredictor {
   const UvProcessingOrder *order_ = nullptr;
   int num_entries_ = 0;
 
-  // Positions by entry, minus each component's minimum, below 2^30.
+  // Positions by entry, non-negative and below 2^30 (CachePositions()).
   std::vector<Pos> positions_;
   // Per entry: |correction| summed over both components (saturated).
   std::vector<uint32_t> magnitude_;
@@ -219,26 +230,42 @@ class MeshPredictionSchemeTexCoordsWeightedPredictor {
 template <typename DataTypeT>
 void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::
     CachePositions() {
+  // Positions within [0, 2^30) (Draco's quantised positions up to 30 bits)
+  // are used as they are, others shifted by ShiftPositions().
+  constexpr uint64_t kLimit = uint64_t{1} << 30;
   positions_.resize(num_entries_);
   if (pos_attribute_->data_type() == DT_INT32) {
-    // Decoding: one copy of Draco's portable positions, shifted in place.
+    // Decoding: one copy of Draco's portable positions.
+    uint32_t spread = 0;
     for (int entry = 0; entry < num_entries_; ++entry) {
-      std::memcpy(positions_[entry].data(),
+      Pos &pos = positions_[entry];
+      std::memcpy(pos.data(),
                   pos_attribute_->GetAddress(pos_attribute_->mapped_index(
                       entry_to_point_id_map_[entry])),
                   sizeof(Pos));
+      spread |= static_cast<uint32_t>(pos[0]) | static_cast<uint32_t>(pos[1]) |
+                static_cast<uint32_t>(pos[2]);
     }
-    ShiftPositions(
-        [&](int entry, int i) { return int64_t{positions_[entry][i]}; });
+    if (spread >= kLimit) {
+      ShiftPositions(
+          [&](int entry, int i) { return int64_t{positions_[entry][i]}; });
+    }
     return;
   }
   std::vector<std::array<int64_t, 3>> values(num_entries_);
+  bool in_range = true;
   for (int entry = 0; entry < num_entries_; ++entry) {
     pos_attribute_->ConvertValue(
         pos_attribute_->mapped_index(entry_to_point_id_map_[entry]), 3,
         values[entry].data());
+    for (int i = 0; i < 3; ++i) {
+      in_range &= static_cast<uint64_t>(values[entry][i]) < kLimit;
+      positions_[entry][i] = static_cast<int32_t>(values[entry][i] & (kLimit - 1));
+    }
   }
-  ShiftPositions([&](int entry, int i) { return values[entry][i]; });
+  if (!in_range) {
+    ShiftPositions([&](int entry, int i) { return values[entry][i]; });
+  }
 }
 
 template <typename DataTypeT>
@@ -278,6 +305,21 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::Start(
   CachePositions();
   magnitude_.assign(num_entries_, 0);
   num_candidates_ = UsesReachStencil(kind) ? kAgreement : kNumCandidates;
+  recent_error_.fill(0);
+  last_orientation_ = 1;
+  step_orientation_sum_ = 0;
+}
+
+template <typename DataTypeT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::StartReach(
+    UvPredictorKind kind, int num_entries) {
+  DRACO_DCHECK(UsesReachStencil(kind));
+  kind_ = kind;
+  order_ = nullptr;
+  num_entries_ = num_entries;
+  CachePositions();
+  magnitude_.assign(num_entries_, 0);
+  num_candidates_ = kAgreement;
   recent_error_.fill(0);
   last_orientation_ = 1;
   step_orientation_sum_ = 0;
@@ -421,27 +463,60 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::
 // ComputeCandidates() for a single stencil (every vertex of the reach kinds
 // that has one), without the sums: each mean is the stencil's own
 // prediction, the agreement-weighted mean is the mean of both (the weight
-// cancels: round(((a + s) / 2) w / (w 2^16)) = round(((a + s) / 2) / 2^16)),
-// and the parallelogram vL + vR - vB needs no rounding.
+// cancels: round(((a + s) / 2) w / (w 2^16)) = round((a + s) / 2^17)), and
+// the parallelogram vL + vR - vB needs no rounding. PredictStencil()'s
+// steps, written out on scalars: no clamps, because one stencil's Q16
+// predictions stay below 2^54 (uv_stencil_geometry.h), and only the
+// candidates the kind chooses from.
 template <typename DataTypeT>
 void MeshPredictionSchemeTexCoordsWeightedPredictor<
     DataTypeT>::ComputeCandidatesOfOneStencil(const UvComputedFrame &frame,
                                               const DataTypeT *data) {
+  constexpr int64_t kLimit = int64_t{1} << kUvStencilMaxUvQuantizationBits;
   const Stencil &stencil = stencils_[0];
-  Uv affine, similarity;
-  PredictStencil(stencil, frame, data, &affine, &similarity);
-  candidates_[kMeanOfBoth] = UvMeanOfQ16(affine + similarity, 2);
-  candidates_[kAgreement] = candidates_[kMeanOfBoth];
-  if (!IsAdaptive()) {
-    return;
+  const bool has_b = stencil.b != UvCornerGraph::kNone;
+  const DataTypeT *const vl = data + stencil.l * kUvNumComponents;
+  const DataTypeT *const vr = data + stencil.r * kUvNumComponents;
+  const DataTypeT *const vb = has_b ? data + stencil.b * kUvNumComponents : vl;
+  const int64_t f[2] = {int64_t{vr[0]} - vl[0], int64_t{vr[1]} - vl[1]};
+  const int64_t g[2] = {int64_t{vb[0]} - vl[0], int64_t{vb[1]} - vl[1]};
+  int64_t affine[2], similarity[2];
+  // IsSupportedUvDifference(): f and g within (-2^20, 2^20), which keeps
+  // every product below in range.
+  const auto supported = [](int64_t x) {
+    return static_cast<uint64_t>(x + (kLimit - 1)) < uint64_t{2 * kLimit - 1};
+  };
+  if (!frame.usable || !supported(f[0]) || !supported(f[1]) ||
+      !supported(g[0]) || !supported(g[1])) {
+    for (int i = 0; i < 2; ++i) {
+      affine[i] = similarity[i] =
+          (int64_t{vl[i]} + vr[i]) * (kUvStencilOne / 2);
+    }
+  } else {
+    const UvStencilFrame &fr = frame.frame;
+    const int64_t h =
+        OrientationFor(Uv(f[0], f[1]), Uv(g[0], g[1]), has_b) > 0 ? fr.h
+                                                                  : -fr.h;
+    const int64_t rot_f[2] = {-f[1], f[0]};
+    for (int i = 0; i < 2; ++i) {
+      const int64_t along = int64_t{vl[i]} * kUvStencilOne + fr.s * f[i];
+      similarity[i] = along + h * rot_f[i];
+      affine[i] = similarity[i];
+      if (fr.has_opposite) {
+        // As PredictAffineQ16().
+        const int64_t g_q8 = RoundedShift(g[i] * kUvStencilOne - fr.sb * f[i], 8);
+        affine[i] = along - RoundedShift(fr.height_ratio * g_q8, 8);
+      }
+    }
   }
-  candidates_[kAffineMean] = UvMeanOfQ16(affine, 1);
-  candidates_[kSimilarityMean] = UvMeanOfQ16(similarity, 1);
-  candidates_[kParallelogramMean] = stencil.b != UvCornerGraph::kNone
-                                        ? UvOf(data, stencil.l) +
-                                              UvOf(data, stencil.r) -
-                                              UvOf(data, stencil.b)
-                                        : candidates_[kMeanOfBoth];
+  for (int i = 0; i < 2; ++i) {
+    candidates_[kMeanOfBoth][i] = RoundedShift(affine[i] + similarity[i], 17);
+    candidates_[kAffineMean][i] = RoundedShift(affine[i], 16);
+    candidates_[kSimilarityMean][i] = RoundedShift(similarity[i], 16);
+    candidates_[kParallelogramMean][i] =
+        has_b ? int64_t{vl[i]} + vr[i] - vb[i] : candidates_[kMeanOfBoth][i];
+  }
+  candidates_[kAgreement] = candidates_[kMeanOfBoth];
 }
 
 template <typename DataTypeT>
@@ -520,11 +595,69 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::Predict(
 }
 
 template <typename DataTypeT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<
+    DataTypeT>::ComputeReachFallback(int p, const Stencil &stencil,
+                                     const DataTypeT *data) {
+  // ComputeFallback() in Draco's order, where an entry's rank is itself:
+  // the latest known vertex, else the previous entry, else zero.
+  const int32_t latest =
+      std::max(std::max(stencil.l, stencil.r), stencil.b);
+  const int32_t source = latest != UvCornerGraph::kNone ? latest : p - 1;
+  candidates_.fill(source < 0 ? Uv(0, 0) : UvOf(data, source));
+}
+
+template <typename DataTypeT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<
+    DataTypeT>::ComputeReachContext(const Stencil &stencil) {
+  // ComputeContext() over the known vertices of |stencil|.
+  uint64_t sum = 0;
+  int count = 0;
+  for (const int32_t entry : {stencil.l, stencil.r, stencil.b}) {
+    if (entry != UvCornerGraph::kNone) {
+      sum += magnitude_[entry];
+      ++count;
+    }
+  }
+  if (count == 0) {
+    context_ = kUvResidualNumContexts - 1;
+    return;
+  }
+  const uint64_t mean = count == 3 ? (sum + 1) / 3 : (sum + count / 2) / count;
+  context_ = std::min(kUvResidualNumContexts - 2, BitLength(mean));
+}
+
+template <typename DataTypeT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::PredictReach(
+    int p, const Stencil &stencil, int num_stencils,
+    const UvComputedFrame &frame, const DataTypeT *data) {
+  stencils_ = &stencil;
+  num_stencils_ = num_stencils;
+  int chosen = kMeanOfBoth;
+  if (num_stencils == 0) {
+    ComputeReachFallback(p, stencil, data);
+  } else {
+    ComputeCandidatesOfOneStencil(frame, data);
+    if (kind_ == UvPredictorKind::kReachAdaptive) {
+      // ChooseCandidate() over the reach kinds' candidates.
+      for (int k = 1; k < kAgreement; ++k) {
+        chosen = recent_error_[k] < recent_error_[chosen] ? k : chosen;
+      }
+    }
+  }
+  for (int i = 0; i < kUvNumComponents; ++i) {
+    predicted_value_[i] = static_cast<DataTypeT>(std::max<int64_t>(
+        std::numeric_limits<DataTypeT>::lowest(),
+        std::min<int64_t>(std::numeric_limits<DataTypeT>::max(),
+                          candidates_[chosen][i])));
+  }
+  ComputeReachContext(stencil);
+}
+
+template <typename DataTypeT>
 void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::Update(
     int step, const DataTypeT *data, const DataTypeT *correction) {
   constexpr uint64_t kMaxError = uint64_t{1} << 20;
-  const int32_t tip = order_->entries[step];
-  const Uv value = UvOf(data, tip);
+  const int32_t tip = order_ != nullptr ? order_->entries[step] : step;
   if (step_orientation_sum_ != 0) {
     last_orientation_ = step_orientation_sum_ > 0 ? 1 : -1;
     step_orientation_sum_ = 0;
@@ -533,14 +666,26 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::Update(
       std::min<uint64_t>(std::numeric_limits<uint32_t>::max(),
                          AbsAsUnsigned(correction[0]) +
                              AbsAsUnsigned(correction[1])));
-  if (IsAdaptive()) {
-    // Exponentially decaying error sums (weight 15/16 per step): below
-    // 16 * 2^21.
-    for (int k = 0; k < num_candidates_; ++k) {
-      const Uv error = value - candidates_[k];
-      recent_error_[k] += std::min(AbsAsUnsigned(error[0]), kMaxError) +
-                          std::min(AbsAsUnsigned(error[1]), kMaxError) -
-                          recent_error_[k] / 16;
+  if (!IsAdaptive()) {
+    return;
+  }
+  // Exponentially decaying error sums (weight 15/16 per step): below
+  // 16 * 2^21. The loop bound is a constant for each kind's candidates.
+  const int64_t value[2] = {data[tip * kUvNumComponents],
+                            data[tip * kUvNumComponents + 1]};
+  const auto update = [&](int k) {
+    recent_error_[k] +=
+        std::min(AbsAsUnsigned(value[0] - candidates_[k][0]), kMaxError) +
+        std::min(AbsAsUnsigned(value[1] - candidates_[k][1]), kMaxError) -
+        recent_error_[k] / 16;
+  };
+  if (num_candidates_ == kAgreement) {
+    for (int k = 0; k < kAgreement; ++k) {
+      update(k);
+    }
+  } else {
+    for (int k = 0; k < kNumCandidates; ++k) {
+      update(k);
     }
   }
 }
@@ -611,18 +756,6 @@ int ReachStencil(const MeshDataT &mesh_data, int p,
   return 0;
 }
 
-// The known vertices of |stencil|, which are the neighbours of its tip.
-inline int KnownVerticesOf(const UvStencilPlan::Stencil &stencil,
-                           int32_t *vertices) {
-  int count = 0;
-  for (const int32_t entry : {stencil.l, stencil.r, stencil.b}) {
-    if (entry != UvCornerGraph::kNone) {
-      vertices[count++] = entry;
-    }
-  }
-  return count;
-}
-
 // What a step of Draco's order needs from the connectivity and the
 // positions alone, so that it can be computed ahead (UvLookahead).
 struct ReachStep {
@@ -665,22 +798,18 @@ bool RunReachPrediction(
     const DataTypeT *data,
     MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT> *predictor,
     ProcessT process) {
-  const auto &data_to_corner = *mesh_data.data_to_corner_map();
-  const int num_entries = static_cast<int>(data_to_corner.size());
-  UvProcessingOrder order;
-  BuildDataOrder(data_to_corner, &order);
-  predictor->Start(config.kind, order);
+  const int num_entries =
+      static_cast<int>(mesh_data.data_to_corner_map()->size());
+  predictor->StartReach(config.kind, num_entries);
   UvLookahead<ReachStep> steps(
       num_entries, UseLookaheadThread(*predictor, num_entries),
       [&](int begin, int end, ReachStep *out) {
         ComputeReachSteps(mesh_data, *predictor, begin, end, out);
       });
-  int32_t neighbours[3];
   for (int p = 0; p < num_entries; ++p) {
     const ReachStep &step = steps.Get(p);
-    predictor->Predict(p, &step.stencil, step.num_stencils, neighbours,
-                       KnownVerticesOf(step.stencil, neighbours), data,
-                       &step.frame);
+    predictor->PredictReach(p, step.stencil, step.num_stencils, step.frame,
+                            data);
     if (!process(p, p)) {
       return false;
     }
