@@ -464,59 +464,47 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::
 // that has one), without the sums: each mean is the stencil's own
 // prediction, the agreement-weighted mean is the mean of both (the weight
 // cancels: round(((a + s) / 2) w / (w 2^16)) = round((a + s) / 2^17)), and
-// the parallelogram vL + vR - vB needs no rounding. PredictStencil()'s
-// steps, written out on scalars: no clamps, because one stencil's Q16
-// predictions stay below 2^54 (uv_stencil_geometry.h), and only the
-// candidates the kind chooses from.
+// the parallelogram vL + vR - vB needs no rounding. Unlike PredictStencil(),
+// no clamps: one stencil's Q16 predictions stay below 2^54
+// (uv_stencil_geometry.h). Only the candidates the kind chooses from.
 template <typename DataTypeT>
 void MeshPredictionSchemeTexCoordsWeightedPredictor<
     DataTypeT>::ComputeCandidatesOfOneStencil(const UvComputedFrame &frame,
                                               const DataTypeT *data) {
-  constexpr int64_t kLimit = int64_t{1} << kUvStencilMaxUvQuantizationBits;
   const Stencil &stencil = stencils_[0];
   const bool has_b = stencil.b != UvCornerGraph::kNone;
-  const DataTypeT *const vl = data + stencil.l * kUvNumComponents;
-  const DataTypeT *const vr = data + stencil.r * kUvNumComponents;
-  const DataTypeT *const vb = has_b ? data + stencil.b * kUvNumComponents : vl;
-  const int64_t f[2] = {int64_t{vr[0]} - vl[0], int64_t{vr[1]} - vl[1]};
-  const int64_t g[2] = {int64_t{vb[0]} - vl[0], int64_t{vb[1]} - vl[1]};
-  int64_t affine[2], similarity[2];
-  // IsSupportedUvDifference(): f and g within (-2^20, 2^20), which keeps
-  // every product below in range.
-  const auto supported = [](int64_t x) {
-    return static_cast<uint64_t>(x + (kLimit - 1)) < uint64_t{2 * kLimit - 1};
-  };
-  if (!frame.usable || !supported(f[0]) || !supported(f[1]) ||
-      !supported(g[0]) || !supported(g[1])) {
-    for (int i = 0; i < 2; ++i) {
-      affine[i] = similarity[i] =
-          (int64_t{vl[i]} + vr[i]) * (kUvStencilOne / 2);
-    }
+  const Uv uv_l = UvOf(data, stencil.l);
+  const Uv uv_r = UvOf(data, stencil.r);
+  const Uv uv_b = has_b ? UvOf(data, stencil.b) : uv_l;
+  const Uv f = uv_r - uv_l;
+  const Uv g = uv_b - uv_l;
+  Uv affine, similarity;
+  // Checking f and g first also bounds the cross product in
+  // OrientationFor() below 2^41.
+  if (!frame.usable || !IsSupportedUvDifference(f) ||
+      !IsSupportedUvDifference(g)) {
+    affine = similarity = PredictMidpointQ16(uv_l, uv_r);
   } else {
-    const UvStencilFrame &fr = frame.frame;
-    const int64_t h =
-        OrientationFor(Uv(f[0], f[1]), Uv(g[0], g[1]), has_b) > 0 ? fr.h
-                                                                  : -fr.h;
-    const int64_t rot_f[2] = {-f[1], f[0]};
-    for (int i = 0; i < 2; ++i) {
-      const int64_t along = int64_t{vl[i]} * kUvStencilOne + fr.s * f[i];
-      similarity[i] = along + h * rot_f[i];
-      affine[i] = similarity[i];
-      if (fr.has_opposite) {
-        // As PredictAffineQ16().
-        const int64_t g_q8 = RoundedShift(g[i] * kUvStencilOne - fr.sb * f[i], 8);
-        affine[i] = along - RoundedShift(fr.height_ratio * g_q8, 8);
-      }
-    }
+    similarity = PredictSimilarityQ16(frame.frame, uv_l, f,
+                                      OrientationFor(f, g, has_b));
+    affine = frame.frame.has_opposite
+                 ? PredictAffineQ16(frame.frame, uv_l, f, g)
+                 : similarity;
   }
   for (int i = 0; i < 2; ++i) {
-    candidates_[kMeanOfBoth][i] = RoundedShift(affine[i] + similarity[i], 17);
-    candidates_[kAffineMean][i] = RoundedShift(affine[i], 16);
-    candidates_[kSimilarityMean][i] = RoundedShift(similarity[i], 16);
-    candidates_[kParallelogramMean][i] =
-        has_b ? int64_t{vl[i]} + vr[i] - vb[i] : candidates_[kMeanOfBoth][i];
+    candidates_[kMeanOfBoth][i] =
+        RoundedShiftUp(affine[i] + similarity[i], 17);
   }
   candidates_[kAgreement] = candidates_[kMeanOfBoth];
+  if (!IsAdaptive()) {
+    return;
+  }
+  for (int i = 0; i < 2; ++i) {
+    candidates_[kAffineMean][i] = RoundedShiftUp(affine[i], 16);
+    candidates_[kSimilarityMean][i] = RoundedShiftUp(similarity[i], 16);
+  }
+  candidates_[kParallelogramMean] =
+      has_b ? uv_l + uv_r - uv_b : candidates_[kMeanOfBoth];
 }
 
 template <typename DataTypeT>
@@ -656,7 +644,6 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::PredictReach(
 template <typename DataTypeT>
 void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::Update(
     int step, const DataTypeT *data, const DataTypeT *correction) {
-  constexpr uint64_t kMaxError = uint64_t{1} << 20;
   const int32_t tip = order_ != nullptr ? order_->entries[step] : step;
   if (step_orientation_sum_ != 0) {
     last_orientation_ = step_orientation_sum_ > 0 ? 1 : -1;
@@ -669,15 +656,15 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::Update(
   if (!IsAdaptive()) {
     return;
   }
-  // Exponentially decaying error sums (weight 15/16 per step): below
-  // 16 * 2^21. The loop bound is a constant for each kind's candidates.
+  // Exponentially decaying error sums (weight 15/16 per step). Candidates
+  // stay below 2^38 texture units, so errors stay below 2^40 and the sums
+  // below 2^44. The loop bound is a constant for each kind's candidates.
   const int64_t value[2] = {data[tip * kUvNumComponents],
                             data[tip * kUvNumComponents + 1]};
   const auto update = [&](int k) {
-    recent_error_[k] +=
-        std::min(AbsAsUnsigned(value[0] - candidates_[k][0]), kMaxError) +
-        std::min(AbsAsUnsigned(value[1] - candidates_[k][1]), kMaxError) -
-        recent_error_[k] / 16;
+    recent_error_[k] += AbsAsUnsigned(value[0] - candidates_[k][0]) +
+                        AbsAsUnsigned(value[1] - candidates_[k][1]) -
+                        recent_error_[k] / 16;
   };
   if (num_candidates_ == kAgreement) {
     for (int k = 0; k < kAgreement; ++k) {

@@ -191,6 +191,18 @@ inline bool ComputeUvStencilFrame(const UvStencilPos &l, const UvStencilPos &r,
   return true;
 }
 
+// round(x / 2^bits) with halves rounded up, for |x| < 2^62 and
+// 0 < bits < 62: a shift of x + 2^62, which is non-negative, so the shift
+// is a floor division on every platform (no shift of a negative value).
+inline int64_t RoundedShiftUp(int64_t x, int bits) {
+  constexpr uint64_t kOffset = uint64_t{1} << 62;
+  const uint64_t shifted =
+      (static_cast<uint64_t>(x) + kOffset + (uint64_t{1} << (bits - 1))) >>
+      bits;
+  return static_cast<int64_t>(shifted) -
+         static_cast<int64_t>(kOffset >> bits);
+}
+
 // Eq. (3) of [Váša & Brunnett 2014], the weighted parallelogram
 //   v'O = w1 vL + w2 vR + (1 - w1 - w2) vB,
 // with the weights of eq. (4) computed from the exact inner angles of the
@@ -213,8 +225,8 @@ inline UvStencilUv PredictAffineQ16(const UvStencilFrame &frame,
     //   g_q16 = g * 2^16 - sb * f < 2^45, reduced to Q8 (< 2^37) so that
     //   height_ratio * g_q8 < 2^61; the result stays below 2^54.
     const int64_t g_q16 = g[i] * kUvStencilOne - frame.sb * f[i];
-    const int64_t g_q8 = RoundedShift(g_q16, 8);
-    const int64_t across_q16 = RoundedShift(frame.height_ratio * g_q8, 8);
+    const int64_t g_q8 = RoundedShiftUp(g_q16, 8);
+    const int64_t across_q16 = RoundedShiftUp(frame.height_ratio * g_q8, 8);
     prediction[i] = uv_l[i] * kUvStencilOne + frame.s * f[i] - across_q16;
   }
   return prediction;
