@@ -39,6 +39,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 
 #include "draco/core/vector_d.h"
@@ -88,25 +89,35 @@ struct UvStencilFrame {
 
 namespace uv_stencil_internal {
 
+// floor(x / 2^bits) for |x| < 2^62 and 0 < bits < 62: a shift of x + 2^62,
+// which is non-negative, so no negative value is shifted.
+inline int64_t FloorShift(int64_t x, int bits) {
+  constexpr uint64_t kOffset = uint64_t{1} << 62;
+  return static_cast<int64_t>((static_cast<uint64_t>(x) + kOffset) >> bits) -
+         static_cast<int64_t>(kOffset >> bits);
+}
+
 // Edge vectors e = R - L, d = O - L, b = B - L and their dot products. When
 // a squared length reaches kUvStencilMaxSquaredLength (only for positions
-// of more than 14 bits), the positions are shifted right by one power of two
-// first, so that the largest component has at most 14 bits; shifting the
-// non-negative positions before subtracting is exact and platform
-// independent. Afterwards ee, dd, bb < 2^30, so ee * dd, ed^2 < 2^60.
+// of more than 14 bits), the vectors are divided (rounding down) by the
+// power of two that leaves their largest component at most 2^14.
+// Afterwards ee, dd, bb < 2^30, so ee * dd and ed^2 < 2^60.
 struct EdgeVectors {
   int64_t e[3], d[3], b[3];
   int64_t ee, dd, bb, ed, eb;
 
   EdgeVectors(const UvStencilPos &l, const UvStencilPos &r,
               const UvStencilPos &o, const UvStencilPos &bp) {
-    Subtract(l, r, o, bp, 0);
+    // Positions below 2^30: differences below 2^30, squares summed below
+    // 2^62.
+    for (int i = 0; i < 3; ++i) {
+      e[i] = int64_t{r[i]} - l[i];
+      d[i] = int64_t{o[i]} - l[i];
+      b[i] = int64_t{bp[i]} - l[i];
+    }
+    SquaredLengths();
     if ((ee | dd | bb) >= kUvStencilMaxSquaredLength) {
-      uint64_t spread = 0;
-      for (int i = 0; i < 3; ++i) {
-        spread |= AbsAsUnsigned(e[i]) | AbsAsUnsigned(d[i]) | AbsAsUnsigned(b[i]);
-      }
-      Subtract(l, r, o, bp, BitLength(spread) - 14);
+      ScaleDown();
     }
     ed = Dot(e, d);
     eb = Dot(e, b);
@@ -116,33 +127,61 @@ struct EdgeVectors {
   static int64_t Dot(const int64_t *a, const int64_t *b) {
     return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
   }
-  // Positions below 2^30: differences below 2^30, squares summed below 2^62.
-  void Subtract(const UvStencilPos &l, const UvStencilPos &r,
-                const UvStencilPos &o, const UvStencilPos &bp, int shift) {
-    for (int i = 0; i < 3; ++i) {
-      const int64_t base = l[i] >> shift;
-      e[i] = (r[i] >> shift) - base;
-      d[i] = (o[i] >> shift) - base;
-      b[i] = (bp[i] >> shift) - base;
-    }
+  void SquaredLengths() {
     ee = Dot(e, e);
     dd = Dot(d, d);
     bb = Dot(b, b);
   }
+  void ScaleDown() {
+    uint64_t spread = 0;
+    for (int i = 0; i < 3; ++i) {
+      spread |= AbsAsUnsigned(e[i]) | AbsAsUnsigned(d[i]) | AbsAsUnsigned(b[i]);
+    }
+    // |x| < 2^(14 + shift), so floor(x / 2^shift) is within [-2^14, 2^14).
+    const int shift = BitLength(spread) - 14;
+    for (int i = 0; i < 3; ++i) {
+      e[i] = FloorShift(e[i], shift);
+      d[i] = FloorShift(d[i], shift);
+      b[i] = FloorShift(b[i], shift);
+    }
+    SquaredLengths();
+  }
 };
 
-// round(num / den) with halves away from zero, for den > 0 and |num| < 2^62
-// (integer division truncates toward zero).
-inline int64_t RoundedQuotient(int64_t num, int64_t den) {
-  const int64_t half = den / 2;
-  return (num + (num < 0 ? -half : half)) / den;
+// floor(sqrt(value)) for 0 <= value < 2^62, exact on every platform: the
+// double square root is only an estimate, which integer comparisons
+// correct (signed conversions: cheaper than IntSqrtFloor()'s unsigned ones).
+inline int64_t SquareRoot(int64_t value) {
+  int64_t root = static_cast<int64_t>(std::sqrt(static_cast<double>(value)));
+  while (root * root > value) {
+    --root;
+  }
+  while ((root + 1) * (root + 1) <= value) {
+    ++root;
+  }
+  return root;
 }
 
-// round(x * 2^16 / den) if its magnitude is at most kUvStencilMaxCoefficient,
-// else false; |x| < 2^46, den > 0.
+// round(x * 2^16 / den) with halves away from zero if its magnitude is at
+// most kUvStencilMaxCoefficient, else false; |x| < 2^46, den > 0. Integer
+// division truncates toward zero.
 inline bool BoundedCoefficient(int64_t x, int64_t den, int32_t *out) {
-  const int64_t q = RoundedQuotient(x * kUvStencilOne, den);
+  const int64_t num = x * kUvStencilOne;
+  const int64_t half = den >> 1;
+  const int64_t q = (num + (num < 0 ? -half : half)) / den;
   if (AbsAsUnsigned(q) > static_cast<uint64_t>(kUvStencilMaxCoefficient)) {
+    return false;
+  }
+  *out = static_cast<int32_t>(q);
+  return true;
+}
+
+// BoundedCoefficient() for x >= 0.
+inline bool BoundedRatio(int64_t x, int64_t den, int32_t *out) {
+  const uint64_t q = (static_cast<uint64_t>(x) * kUvStencilOne +
+                      static_cast<uint64_t>(den >> 1)) /
+                     static_cast<uint64_t>(den);
+  if (q > static_cast<uint64_t>(kUvStencilMaxCoefficient)) {
     return false;
   }
   *out = static_cast<int32_t>(q);
@@ -174,33 +213,25 @@ inline bool ComputeUvStencilFrame(const UvStencilPos &l, const UvStencilPos &r,
   const int64_t cb = has_b ? v.ee * v.bb - v.eb * v.eb : 0;
   // cd, cb < 2^60: t >= 0 and the scaled radicands stay below 2^61.
   const int t = (61 - BitLength(static_cast<uint64_t>(cd | cb))) / 2;
-  const int64_t hd =
-      static_cast<int64_t>(IntSqrtFloor(static_cast<uint64_t>(cd) << (2 * t)));
+  const int64_t hd = SquareRoot(cd << (2 * t));
   // |ed|, hd < 2^31: numerators below 2^47; ee << t < 2^60.
   if (!BoundedCoefficient(v.ed, v.ee, &frame->s) ||
-      !BoundedCoefficient(hd, v.ee << t, &frame->h)) {
+      !BoundedRatio(hd, v.ee << t, &frame->h)) {
     return false;
   }
   frame->has_opposite = false;
   if (cb > 0) {
-    const int64_t hb = static_cast<int64_t>(
-        IntSqrtFloor(static_cast<uint64_t>(cb) << (2 * t)));
+    const int64_t hb = SquareRoot(cb << (2 * t));
     frame->has_opposite = BoundedCoefficient(v.eb, v.ee, &frame->sb) &&
-                          BoundedCoefficient(hd, hb, &frame->height_ratio);
+                          BoundedRatio(hd, hb, &frame->height_ratio);
   }
   return true;
 }
 
-// round(x / 2^bits) with halves rounded up, for |x| < 2^62 and
-// 0 < bits < 62: a shift of x + 2^62, which is non-negative, so the shift
-// is a floor division on every platform (no shift of a negative value).
+// round(x / 2^bits) with halves rounded up, for |x| < 2^61 and
+// 0 < bits < 62.
 inline int64_t RoundedShiftUp(int64_t x, int bits) {
-  constexpr uint64_t kOffset = uint64_t{1} << 62;
-  const uint64_t shifted =
-      (static_cast<uint64_t>(x) + kOffset + (uint64_t{1} << (bits - 1))) >>
-      bits;
-  return static_cast<int64_t>(shifted) -
-         static_cast<int64_t>(kOffset >> bits);
+  return uv_stencil_internal::FloorShift(x + (int64_t{1} << (bits - 1)), bits);
 }
 
 // Eq. (3) of [Váša & Brunnett 2014], the weighted parallelogram
