@@ -265,7 +265,8 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::
         values[entry].data());
     for (int i = 0; i < 3; ++i) {
       in_range &= static_cast<uint64_t>(values[entry][i]) < kLimit;
-      positions_[entry][i] = static_cast<int32_t>(values[entry][i] & (kLimit - 1));
+      positions_[entry][i] =
+          static_cast<int32_t>(values[entry][i] & (kLimit - 1));
     }
   }
   if (!in_range) {
@@ -489,8 +490,8 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<
       !IsSupportedUvDifference(g)) {
     affine = similarity = PredictMidpointQ16(uv_l, uv_r);
   } else {
-    similarity = PredictSimilarityQ16(frame.frame, uv_l, f,
-                                      OrientationFor(f, g, has_b));
+    similarity =
+        PredictSimilarityQ16(frame.frame, uv_l, f, OrientationFor(f, g, has_b));
     affine = frame.frame.has_opposite
                  ? PredictAffineQ16(frame.frame, uv_l, f, g)
                  : similarity;
@@ -593,8 +594,7 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<
                                      const DataTypeT *data) {
   // ComputeFallback() in Draco's order, where an entry's rank is itself:
   // the latest known vertex, else the previous entry, else zero.
-  const int32_t latest =
-      std::max(std::max(stencil.l, stencil.r), stencil.b);
+  const int32_t latest = std::max(std::max(stencil.l, stencil.r), stencil.b);
   const int32_t source = latest != UvCornerGraph::kNone ? latest : p - 1;
   candidates_.fill(source < 0 ? Uv(0, 0) : UvOf(data, source));
 }
@@ -615,7 +615,9 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<
     context_ = kUvResidualNumContexts - 1;
     return;
   }
-  const uint64_t mean = count == 3 ? (sum + 1) / 3 : (sum + count / 2) / count;
+  // (sum + count / 2) / count with constant divisors.
+  const uint64_t mean =
+      count == 3 ? (sum + 1) / 3 : (count == 2 ? (sum + 1) / 2 : sum);
   context_ = std::min(kUvResidualNumContexts - 2, BitLength(mean));
 }
 

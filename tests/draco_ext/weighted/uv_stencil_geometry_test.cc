@@ -201,9 +201,8 @@ TEST(UvStencilGeometryTest, FrameIsScaleInvariant) {
     };
     UvStencilFrame small;
     if (!frame_at(0, &small) || !small.has_opposite ||
-        std::abs(small.s) > 4 * kUvStencilOne ||
-        small.h < kUvStencilOne / 16 || small.h > 4 * kUvStencilOne ||
-        small.height_ratio > 4 * kUvStencilOne) {
+        std::abs(small.s) > 4 * kUvStencilOne || small.h < kUvStencilOne / 16 ||
+        small.h > 4 * kUvStencilOne || small.height_ratio > 4 * kUvStencilOne) {
       continue;
     }
     ++compared;
