@@ -70,10 +70,13 @@ struct UvComputedFrame {
 //   a  the parallelogram vL + vR - vB when B is known.
 // Candidates combine all stencils: mean of c and s, mean of c, mean of s,
 // mean of a, and the agreement-weighted mean of (c + s) / 2
-// (UvAgreementWeight()). kAdaptive and kReachAdaptive pick, per vertex, the
-// candidate with the smallest recent errors (a sum over all vertices so far
-// that decays by 15/16 per vertex; it beat the errors at the vertex's own
-// neighbours on 6 of 7 test meshes, and costs no per-vertex memory);
+// (UvAgreementWeight()). kAdaptive picks, per vertex, the candidate with the
+// smallest recent errors (a sum over all vertices so far that decays by
+// 15/16 per vertex; it beat the errors at the vertex's own neighbours on 6
+// of 7 test meshes, and costs no per-vertex memory); kReachAdaptive does the
+// same among c, s and a (without the mean of c and s, corpus UV bytes at
+// qt 12 grow by 0.45 % in total, 0.0014 in the median ratio, while each
+// candidate costs about 30 instructions per vertex to decode);
 // kAgreementWeighted always takes the last one, kReachMean the first.
 //
 // Also provides the residual context: the bit length (capped at 7) of the
@@ -111,8 +114,11 @@ class MeshPredictionSchemeTexCoordsWeightedPredictor {
 
   typedef UvStencilPlan::Stencil Stencil;
 
-  // Prepares one pass over the entries of |order|, which must outlive it.
+  // Prepares one pass of a multi-stencil kind over the entries of |order|,
+  // which must outlive it.
   void Start(UvPredictorKind kind, const UvProcessingOrder &order);
+  // Start() for the reach kinds, whose order is Draco's entry order.
+  void StartReach(UvPredictorKind kind, int num_entries);
 
   // The frame of |stencil| with tip |tip|. Reads only the positions cached
   // by Start(), so other threads may call it during a pass.
@@ -126,6 +132,12 @@ class MeshPredictionSchemeTexCoordsWeightedPredictor {
   void Predict(int step, const Stencil *stencils, int num_stencils,
                const int32_t *neighbours, int num_neighbours,
                const DataTypeT *data, const UvComputedFrame *frames);
+
+  // Predict() for the reach kinds (after StartReach()) at entry |p|: the
+  // candidates of |stencil| and its |frame| when |num_stencils| is 1, else
+  // the fallback; the known vertices of |stencil| are the neighbours.
+  void PredictReach(int p, const Stencil &stencil, int num_stencils,
+                    const UvComputedFrame &frame, const DataTypeT *data);
 
   // Records the value (now in |data|) and the correction of the entry just
   // predicted at |step|.
@@ -146,6 +158,8 @@ class MeshPredictionSchemeTexCoordsWeightedPredictor {
     kParallelogramMean = 3,
     kAgreement = 4
   };
+  // kReachAdaptive's candidates: kFirstReachCandidate .. kAgreement - 1.
+  static constexpr int kFirstReachCandidate = kAffineMean;
 
   Uv UvOf(const DataTypeT *data, int32_t entry) const {
     return Uv(data[entry * kUvNumComponents],
@@ -177,6 +191,9 @@ class MeshPredictionSchemeTexCoordsWeightedPredictor {
   void ComputeCandidatesOfOneStencil(const UvComputedFrame &frame,
                                      const DataTypeT *data);
   void ComputeFallback(int step, const DataTypeT *data);
+  void ComputeReachFallback(int p, const Stencil &stencil,
+                            const DataTypeT *data);
+  void ComputeReachContext(const Stencil &stencil);
   int ChooseCandidate() const;
   void ComputeContext();
 
@@ -187,14 +204,14 @@ class MeshPredictionSchemeTexCoordsWeightedPredictor {
   const UvProcessingOrder *order_ = nullptr;
   int num_entries_ = 0;
 
-  // Positions by entry, minus each component's minimum, below 2^30.
+  // Positions by entry, non-negative and below 2^30 (CachePositions()).
   std::vector<Pos> positions_;
   // Per entry: |correction| summed over both components (saturated).
   std::vector<uint32_t> magnitude_;
-  // The candidates the kind chooses from, kMeanOfBoth first: the reach
-  // kinds have no agreement weighting (one stencil has nothing to agree
-  // with); the other kinds leave out kParallelogramMean, which the adaptive
-  // choice picks for few vertices (corpus sizes +0.1 % with it left out).
+  // The candidates the multi-stencil kinds choose from, kMeanOfBoth first;
+  // they leave out kParallelogramMean, which the adaptive choice picks for
+  // few vertices (corpus sizes +0.1 % with it left out). The reach kinds
+  // choose among kFirstReachCandidate .. kAgreement - 1 instead.
   std::array<int, kNumCandidates> active_candidates_ = {};
   int num_active_ = 0;
   // Per candidate: the recent prediction errors, decaying (adaptive kinds).
@@ -217,26 +234,43 @@ class MeshPredictionSchemeTexCoordsWeightedPredictor {
 template <typename DataTypeT>
 void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::
     CachePositions() {
+  // Positions within [0, 2^30) (Draco's quantised positions up to 30 bits)
+  // are used as they are, others shifted by ShiftPositions().
+  constexpr uint64_t kLimit = uint64_t{1} << 30;
   positions_.resize(num_entries_);
   if (pos_attribute_->data_type() == DT_INT32) {
-    // Decoding: one copy of Draco's portable positions, shifted in place.
+    // Decoding: one copy of Draco's portable positions.
+    uint32_t spread = 0;
     for (int entry = 0; entry < num_entries_; ++entry) {
-      std::memcpy(positions_[entry].data(),
+      Pos &pos = positions_[entry];
+      std::memcpy(pos.data(),
                   pos_attribute_->GetAddress(pos_attribute_->mapped_index(
                       entry_to_point_id_map_[entry])),
                   sizeof(Pos));
+      spread |= static_cast<uint32_t>(pos[0]) | static_cast<uint32_t>(pos[1]) |
+                static_cast<uint32_t>(pos[2]);
     }
-    ShiftPositions(
-        [&](int entry, int i) { return int64_t{positions_[entry][i]}; });
+    if (spread >= kLimit) {
+      ShiftPositions(
+          [&](int entry, int i) { return int64_t{positions_[entry][i]}; });
+    }
     return;
   }
   std::vector<std::array<int64_t, 3>> values(num_entries_);
+  bool in_range = true;
   for (int entry = 0; entry < num_entries_; ++entry) {
     pos_attribute_->ConvertValue(
         pos_attribute_->mapped_index(entry_to_point_id_map_[entry]), 3,
         values[entry].data());
+    for (int i = 0; i < 3; ++i) {
+      in_range &= static_cast<uint64_t>(values[entry][i]) < kLimit;
+      positions_[entry][i] =
+          static_cast<int32_t>(values[entry][i] & (kLimit - 1));
+    }
   }
-  ShiftPositions([&](int entry, int i) { return values[entry][i]; });
+  if (!in_range) {
+    ShiftPositions([&](int entry, int i) { return values[entry][i]; });
+  }
 }
 
 template <typename DataTypeT>
@@ -270,14 +304,28 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::ShiftPositions(
 template <typename DataTypeT>
 void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::Start(
     UvPredictorKind kind, const UvProcessingOrder &order) {
+  DRACO_DCHECK(!UsesReachStencil(kind));
   kind_ = kind;
   order_ = &order;
   num_entries_ = static_cast<int>(order.rank.size());
   CachePositions();
   magnitude_.assign(num_entries_, 0);
-  active_candidates_ = {kMeanOfBoth, kAffineMean, kSimilarityMean,
-                        UsesReachStencil(kind) ? kParallelogramMean : kAgreement};
+  active_candidates_ = {kMeanOfBoth, kAffineMean, kSimilarityMean, kAgreement};
   num_active_ = 4;
+  recent_error_.fill(0);
+  last_orientation_ = 1;
+  step_orientation_sum_ = 0;
+}
+
+template <typename DataTypeT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::StartReach(
+    UvPredictorKind kind, int num_entries) {
+  DRACO_DCHECK(UsesReachStencil(kind));
+  kind_ = kind;
+  order_ = nullptr;
+  num_entries_ = num_entries;
+  CachePositions();
+  magnitude_.assign(num_entries_, 0);
   recent_error_.fill(0);
   last_orientation_ = 1;
   step_orientation_sum_ = 0;
@@ -375,27 +423,49 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::
 // ComputeCandidates() for a single stencil (every vertex of the reach kinds
 // that has one), without the sums: each mean is the stencil's own
 // prediction, the agreement-weighted mean is the mean of both (the weight
-// cancels: round(((a + s) / 2) w / (w 2^16)) = round(((a + s) / 2) / 2^16)),
-// and the parallelogram vL + vR - vB needs no rounding.
+// cancels: round(((a + s) / 2) w / (w 2^16)) = round((a + s) / 2^17)), and
+// the parallelogram vL + vR - vB needs no rounding. Unlike PredictStencil(),
+// no clamps: one stencil's Q16 predictions stay below 2^54
+// (uv_stencil_geometry.h). Only the candidates the kind chooses from.
 template <typename DataTypeT>
 void MeshPredictionSchemeTexCoordsWeightedPredictor<
     DataTypeT>::ComputeCandidatesOfOneStencil(const UvComputedFrame &frame,
                                               const DataTypeT *data) {
   const Stencil &stencil = stencils_[0];
+  const bool has_b = stencil.b != UvCornerGraph::kNone;
+  const Uv uv_l = UvOf(data, stencil.l);
+  const Uv uv_r = UvOf(data, stencil.r);
+  const Uv uv_b = has_b ? UvOf(data, stencil.b) : uv_l;
+  const Uv f = uv_r - uv_l;
+  const Uv g = uv_b - uv_l;
   Uv affine, similarity;
-  PredictStencil(stencil, frame, data, &affine, &similarity);
-  candidates_[kMeanOfBoth] = UvMeanOfQ16(affine + similarity, 2);
-  candidates_[kAgreement] = candidates_[kMeanOfBoth];
+  // Checking f and g first also bounds the cross product in
+  // OrientationFor() below 2^41.
+  if (!frame.usable || !IsSupportedUvDifference(f) ||
+      !IsSupportedUvDifference(g)) {
+    affine = similarity = PredictMidpointQ16(uv_l, uv_r);
+  } else {
+    similarity =
+        PredictSimilarityQ16(frame.frame, uv_l, f, OrientationFor(f, g, has_b));
+    affine = frame.frame.has_opposite
+                 ? PredictAffineQ16(frame.frame, uv_l, f, g)
+                 : similarity;
+  }
+  Uv mean;
+  for (int i = 0; i < 2; ++i) {
+    mean[i] = RoundedShiftUp(affine[i] + similarity[i], 17);
+  }
+  if (kind_ != UvPredictorKind::kReachAdaptive) {
+    candidates_[kMeanOfBoth] = candidates_[kAgreement] = mean;
+  }
   if (!IsAdaptive()) {
     return;
   }
-  candidates_[kAffineMean] = UvMeanOfQ16(affine, 1);
-  candidates_[kSimilarityMean] = UvMeanOfQ16(similarity, 1);
-  candidates_[kParallelogramMean] = stencil.b != UvCornerGraph::kNone
-                                        ? UvOf(data, stencil.l) +
-                                              UvOf(data, stencil.r) -
-                                              UvOf(data, stencil.b)
-                                        : candidates_[kMeanOfBoth];
+  for (int i = 0; i < 2; ++i) {
+    candidates_[kAffineMean][i] = RoundedShiftUp(affine[i], 16);
+    candidates_[kSimilarityMean][i] = RoundedShiftUp(similarity[i], 16);
+  }
+  candidates_[kParallelogramMean] = has_b ? uv_l + uv_r - uv_b : mean;
 }
 
 template <typename DataTypeT>
@@ -476,11 +546,70 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::Predict(
 }
 
 template <typename DataTypeT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<
+    DataTypeT>::ComputeReachFallback(int p, const Stencil &stencil,
+                                     const DataTypeT *data) {
+  // ComputeFallback() in Draco's order, where an entry's rank is itself:
+  // the latest known vertex, else the previous entry, else zero.
+  const int32_t latest = std::max(std::max(stencil.l, stencil.r), stencil.b);
+  const int32_t source = latest != UvCornerGraph::kNone ? latest : p - 1;
+  candidates_.fill(source < 0 ? Uv(0, 0) : UvOf(data, source));
+}
+
+template <typename DataTypeT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<
+    DataTypeT>::ComputeReachContext(const Stencil &stencil) {
+  // ComputeContext() over the known vertices of |stencil|.
+  uint64_t sum = 0;
+  int count = 0;
+  for (const int32_t entry : {stencil.l, stencil.r, stencil.b}) {
+    if (entry != UvCornerGraph::kNone) {
+      sum += magnitude_[entry];
+      ++count;
+    }
+  }
+  if (count == 0) {
+    context_ = kUvResidualNumContexts - 1;
+    return;
+  }
+  // (sum + count / 2) / count with constant divisors.
+  const uint64_t mean =
+      count == 3 ? (sum + 1) / 3 : (count == 2 ? (sum + 1) / 2 : sum);
+  context_ = std::min(kUvResidualNumContexts - 2, BitLength(mean));
+}
+
+template <typename DataTypeT>
+void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::PredictReach(
+    int p, const Stencil &stencil, int num_stencils,
+    const UvComputedFrame &frame, const DataTypeT *data) {
+  stencils_ = &stencil;
+  num_stencils_ = num_stencils;
+  int chosen = kMeanOfBoth;
+  if (num_stencils == 0) {
+    ComputeReachFallback(p, stencil, data);
+  } else {
+    ComputeCandidatesOfOneStencil(frame, data);
+    if (kind_ == UvPredictorKind::kReachAdaptive) {
+      // ChooseCandidate() over kReachAdaptive's candidates.
+      chosen = kFirstReachCandidate;
+      for (int k = kFirstReachCandidate + 1; k < kAgreement; ++k) {
+        chosen = recent_error_[k] < recent_error_[chosen] ? k : chosen;
+      }
+    }
+  }
+  for (int i = 0; i < kUvNumComponents; ++i) {
+    predicted_value_[i] = static_cast<DataTypeT>(std::max<int64_t>(
+        std::numeric_limits<DataTypeT>::lowest(),
+        std::min<int64_t>(std::numeric_limits<DataTypeT>::max(),
+                          candidates_[chosen][i])));
+  }
+  ComputeReachContext(stencil);
+}
+
+template <typename DataTypeT>
 void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::Update(
     int step, const DataTypeT *data, const DataTypeT *correction) {
-  constexpr uint64_t kMaxError = uint64_t{1} << 20;
-  const int32_t tip = order_->entries[step];
-  const Uv value = UvOf(data, tip);
+  const int32_t tip = order_ != nullptr ? order_->entries[step] : step;
   if (step_orientation_sum_ != 0) {
     last_orientation_ = step_orientation_sum_ > 0 ? 1 : -1;
     step_orientation_sum_ = 0;
@@ -489,15 +618,26 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::Update(
       std::min<uint64_t>(std::numeric_limits<uint32_t>::max(),
                          AbsAsUnsigned(correction[0]) +
                              AbsAsUnsigned(correction[1])));
-  if (IsAdaptive()) {
-    // Exponentially decaying error sums (weight 15/16 per step): below
-    // 16 * 2^21.
+  if (!IsAdaptive()) {
+    return;
+  }
+  // Exponentially decaying error sums (weight 15/16 per step). Candidates
+  // stay below 2^38 texture units, so errors stay below 2^40 and the sums
+  // below 2^44. The loop bound is a constant for each kind's candidates.
+  const int64_t value[2] = {data[tip * kUvNumComponents],
+                            data[tip * kUvNumComponents + 1]};
+  const auto update = [&](int k) {
+    recent_error_[k] += AbsAsUnsigned(value[0] - candidates_[k][0]) +
+                        AbsAsUnsigned(value[1] - candidates_[k][1]) -
+                        recent_error_[k] / 16;
+  };
+  if (UsesReachStencil(kind_)) {
+    for (int k = kFirstReachCandidate; k < kAgreement; ++k) {
+      update(k);
+    }
+  } else {
     for (int i = 0; i < num_active_; ++i) {
-      const int k = active_candidates_[i];
-      const Uv error = value - candidates_[k];
-      recent_error_[k] += std::min(AbsAsUnsigned(error[0]), kMaxError) +
-                          std::min(AbsAsUnsigned(error[1]), kMaxError) -
-                          recent_error_[k] / 16;
+      update(active_candidates_[i]);
     }
   }
 }
@@ -568,18 +708,6 @@ int ReachStencil(const MeshDataT &mesh_data, int p,
   return 0;
 }
 
-// The known vertices of |stencil|, which are the neighbours of its tip.
-inline int KnownVerticesOf(const UvStencilPlan::Stencil &stencil,
-                           int32_t *vertices) {
-  int count = 0;
-  for (const int32_t entry : {stencil.l, stencil.r, stencil.b}) {
-    if (entry != UvCornerGraph::kNone) {
-      vertices[count++] = entry;
-    }
-  }
-  return count;
-}
-
 // What a step of Draco's order needs from the connectivity and the
 // positions alone, so that it can be computed ahead (UvLookahead).
 struct ReachStep {
@@ -622,22 +750,18 @@ bool RunReachPrediction(
     const DataTypeT *data,
     MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT> *predictor,
     ProcessT process) {
-  const auto &data_to_corner = *mesh_data.data_to_corner_map();
-  const int num_entries = static_cast<int>(data_to_corner.size());
-  UvProcessingOrder order;
-  BuildDataOrder(data_to_corner, &order);
-  predictor->Start(config.kind, order);
+  const int num_entries =
+      static_cast<int>(mesh_data.data_to_corner_map()->size());
+  predictor->StartReach(config.kind, num_entries);
   UvLookahead<ReachStep> steps(
       num_entries, UseLookaheadThread(*predictor, num_entries),
       [&](int begin, int end, ReachStep *out) {
         ComputeReachSteps(mesh_data, *predictor, begin, end, out);
       });
-  int32_t neighbours[3];
   for (int p = 0; p < num_entries; ++p) {
     const ReachStep &step = steps.Get(p);
-    predictor->Predict(p, &step.stencil, step.num_stencils, neighbours,
-                       KnownVerticesOf(step.stencil, neighbours), data,
-                       &step.frame);
+    predictor->PredictReach(p, step.stencil, step.num_stencils, step.frame,
+                            data);
     if (!process(p, p)) {
       return false;
     }

@@ -39,6 +39,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstdint>
 
 #include "draco/core/vector_d.h"
@@ -55,9 +56,9 @@ constexpr int64_t kUvStencilOne = int64_t{1} << 16;
 // Stencils whose coefficients exceed this magnitude (256.0) are rejected:
 // they come from (nearly) degenerate triangles and would predict far away.
 constexpr int64_t kUvStencilMaxCoefficient = int64_t{256} * kUvStencilOne;
-// Edge vectors are scaled to this many bits per component, so that squared
-// cross products stay below 2^60.
-constexpr int kUvStencilPositionBits = 14;
+// Squared edge lengths below this bound make every product below fit in 62
+// bits; longer stencils (only above 14-bit positions) are scaled down first.
+constexpr int64_t kUvStencilMaxSquaredLength = int64_t{1} << 30;
 // Largest texture coordinate quantisation the arithmetic supports: UV
 // differences stay below 2^20, all intermediate products below 2^62.
 constexpr int kUvStencilMaxUvQuantizationBits = 20;
@@ -76,7 +77,7 @@ inline bool IsSupportedUvDifference(const UvStencilUv &d) {
 
 // The tip's unfolded coordinates: s and h of the tip O, sb and the height
 // ratio h / hb of the opposite vertex B, all in Q16.
-// Their magnitudes are at most 2^24 + 1 (coefficients are bounded by
+// Their magnitudes are at most 2^24 (coefficients are bounded by
 // kUvStencilMaxCoefficient), and every product below widens them to 64 bits.
 struct UvStencilFrame {
   int32_t s = 0;
@@ -88,54 +89,103 @@ struct UvStencilFrame {
 
 namespace uv_stencil_internal {
 
-// Edge vectors e = R - L, d = O - L, b = B - L, scaled by one power of two so
-// that the largest component has at most kUvStencilPositionBits bits (which
-// bounds the products below) and, for small stencils, at least that many
-// (which keeps the integer square roots precise). Down-scaling shifts the
-// non-negative positions before subtracting, which is exact and platform
-// independent.
+// floor(x / 2^bits) for |x| < 2^62 and 0 < bits < 62: a shift of x + 2^62,
+// which is non-negative, so no negative value is shifted.
+inline int64_t FloorShift(int64_t x, int bits) {
+  constexpr uint64_t kOffset = uint64_t{1} << 62;
+  return static_cast<int64_t>((static_cast<uint64_t>(x) + kOffset) >> bits) -
+         static_cast<int64_t>(kOffset >> bits);
+}
+
+// Edge vectors e = R - L, d = O - L, b = B - L and their dot products. When
+// a squared length reaches kUvStencilMaxSquaredLength (only for positions
+// of more than 14 bits), the vectors are divided (rounding down) by the
+// power of two that leaves their largest component at most 2^14.
+// Afterwards ee, dd, bb < 2^30, so ee * dd and ed^2 < 2^60.
 struct EdgeVectors {
   int64_t e[3], d[3], b[3];
+  int64_t ee, dd, bb, ed, eb;
 
   EdgeVectors(const UvStencilPos &l, const UvStencilPos &r,
               const UvStencilPos &o, const UvStencilPos &bp) {
-    uint64_t spread = 0;
+    // Positions below 2^30: differences below 2^30, squares summed below
+    // 2^62.
     for (int i = 0; i < 3; ++i) {
       e[i] = int64_t{r[i]} - l[i];
       d[i] = int64_t{o[i]} - l[i];
       b[i] = int64_t{bp[i]} - l[i];
+    }
+    SquaredLengths();
+    if ((ee | dd | bb) >= kUvStencilMaxSquaredLength) {
+      ScaleDown();
+    }
+    ed = Dot(e, d);
+    eb = Dot(e, b);
+  }
+
+ private:
+  static int64_t Dot(const int64_t *a, const int64_t *b) {
+    return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  }
+  void SquaredLengths() {
+    ee = Dot(e, e);
+    dd = Dot(d, d);
+    bb = Dot(b, b);
+  }
+  void ScaleDown() {
+    uint64_t spread = 0;
+    for (int i = 0; i < 3; ++i) {
       spread |= AbsAsUnsigned(e[i]) | AbsAsUnsigned(d[i]) | AbsAsUnsigned(b[i]);
     }
-    const int excess = BitLength(spread) - kUvStencilPositionBits;
-    if (excess > 0) {
-      for (int i = 0; i < 3; ++i) {
-        const int64_t base = l[i] >> excess;
-        e[i] = (r[i] >> excess) - base;
-        d[i] = (o[i] >> excess) - base;
-        b[i] = (bp[i] >> excess) - base;
-      }
-    } else {
-      const int64_t up = int64_t{1} << -excess;
-      for (int i = 0; i < 3; ++i) {
-        e[i] *= up;
-        d[i] *= up;
-        b[i] *= up;
-      }
+    // |x| < 2^(14 + shift), so floor(x / 2^shift) is within [-2^14, 2^14).
+    const int shift = BitLength(spread) - 14;
+    for (int i = 0; i < 3; ++i) {
+      e[i] = FloorShift(e[i], shift);
+      d[i] = FloorShift(d[i], shift);
+      b[i] = FloorShift(b[i], shift);
     }
+    SquaredLengths();
   }
 };
 
-inline int64_t Dot(const int64_t *a, const int64_t *b) {
-  return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+// floor(sqrt(value)) for 0 <= value < 2^62, exact on every platform: the
+// double square root is only an estimate, which integer comparisons
+// correct (signed conversions: cheaper than IntSqrtFloor()'s unsigned ones).
+inline int64_t SquareRoot(int64_t value) {
+  int64_t root = static_cast<int64_t>(std::sqrt(static_cast<double>(value)));
+  while (root * root > value) {
+    --root;
+  }
+  while ((root + 1) * (root + 1) <= value) {
+    ++root;
+  }
+  return root;
 }
 
-// |a x b| rounded down; below 2^30 for components of at most 2^14.
-inline int64_t CrossNorm(const int64_t *a, const int64_t *b) {
-  const int64_t x = a[1] * b[2] - a[2] * b[1];
-  const int64_t y = a[2] * b[0] - a[0] * b[2];
-  const int64_t z = a[0] * b[1] - a[1] * b[0];
-  return static_cast<int64_t>(
-      IntSqrtFloor(static_cast<uint64_t>(x * x + y * y + z * z)));
+// round(x * 2^16 / den) with halves away from zero if its magnitude is at
+// most kUvStencilMaxCoefficient, else false; |x| < 2^46, den > 0. Integer
+// division truncates toward zero.
+inline bool BoundedCoefficient(int64_t x, int64_t den, int32_t *out) {
+  const int64_t num = x * kUvStencilOne;
+  const int64_t half = den >> 1;
+  const int64_t q = (num + (num < 0 ? -half : half)) / den;
+  if (AbsAsUnsigned(q) > static_cast<uint64_t>(kUvStencilMaxCoefficient)) {
+    return false;
+  }
+  *out = static_cast<int32_t>(q);
+  return true;
+}
+
+// BoundedCoefficient() for x >= 0.
+inline bool BoundedRatio(int64_t x, int64_t den, int32_t *out) {
+  const uint64_t q = (static_cast<uint64_t>(x) * kUvStencilOne +
+                      static_cast<uint64_t>(den >> 1)) /
+                     static_cast<uint64_t>(den);
+  if (q > static_cast<uint64_t>(kUvStencilMaxCoefficient)) {
+    return false;
+  }
+  *out = static_cast<int32_t>(q);
+  return true;
 }
 
 }  // namespace uv_stencil_internal
@@ -145,49 +195,43 @@ inline int64_t CrossNorm(const int64_t *a, const int64_t *b) {
 // degenerate or a coefficient is out of bounds; has_opposite is false when B
 // is missing, collinear with LR or out of bounds.
 //
-// Divisions are replaced by products with reciprocals: with
-// inv = floor(2^52 / ee), x * 2^16 / ee ~ x * inv / 2^36, exact to a relative
-// 2^-22; the bound |x| <= 256 ee, checked first, keeps |x| * inv < 2^60.
+// |e x d| and |e x b| are square roots of Lagrange's identity
+// |e x d|^2 = |e|^2 |d|^2 - (e.d)^2, exact in 64 bits (< 2^60). Both
+// radicands are scaled by one power of four t so that the larger has about
+// 60 bits; the roots hd, hb then carry about 30 significant bits whatever
+// the stencil's size, and the t cancels in h / hb = hd / hb. Four rounded
+// integer divisions give the Q16 coordinates.
 inline bool ComputeUvStencilFrame(const UvStencilPos &l, const UvStencilPos &r,
                                   const UvStencilPos &o, const UvStencilPos &b,
                                   bool has_b, UvStencilFrame *frame) {
   using namespace uv_stencil_internal;
-  constexpr int kReciprocalBits = 52;
-  constexpr int kShift = kReciprocalBits - 16;
-  constexpr int64_t kMaxRatio = kUvStencilMaxCoefficient / kUvStencilOne;
   const EdgeVectors v(l, r, o, has_b ? b : l);
-  // Components are at most 2^14: |e|^2 < 2^30, the dot products and the
-  // cross norms below 2^30, squared cross products below 2^60.
-  const int64_t ee = Dot(v.e, v.e);
-  if (ee == 0) {
+  if (v.ee == 0) {
     return false;
   }
-  const int64_t ed = Dot(v.e, v.d);
-  const int64_t hd = CrossNorm(v.e, v.d);
-  const int64_t limit = kMaxRatio * ee;
-  if (AbsAsUnsigned(ed) > static_cast<uint64_t>(limit) || hd > limit) {
+  const int64_t cd = v.ee * v.dd - v.ed * v.ed;
+  const int64_t cb = has_b ? v.ee * v.bb - v.eb * v.eb : 0;
+  // cd, cb < 2^60: t >= 0 and the scaled radicands stay below 2^61.
+  const int t = (61 - BitLength(static_cast<uint64_t>(cd | cb))) / 2;
+  const int64_t hd = SquareRoot(cd << (2 * t));
+  // |ed|, hd < 2^31: numerators below 2^47; ee << t < 2^60.
+  if (!BoundedCoefficient(v.ed, v.ee, &frame->s) ||
+      !BoundedRatio(hd, v.ee << t, &frame->h)) {
     return false;
   }
-  const int64_t inv_ee =
-      static_cast<int64_t>(FloorDivide(uint64_t{1} << kReciprocalBits, ee));
-  frame->s = static_cast<int32_t>(MultiplyShiftRounded(ed, inv_ee, kShift));
-  frame->h = static_cast<int32_t>(MultiplyShiftRounded(hd, inv_ee, kShift));
   frame->has_opposite = false;
-  if (has_b) {
-    const int64_t eb = Dot(v.e, v.b);
-    const int64_t hb = CrossNorm(v.e, v.b);
-    if (hb > 0 && AbsAsUnsigned(eb) <= static_cast<uint64_t>(limit) &&
-        hd <= kMaxRatio * hb) {
-      const int64_t inv_hb = static_cast<int64_t>(
-          FloorDivide(uint64_t{1} << kReciprocalBits, hb));
-      frame->sb =
-          static_cast<int32_t>(MultiplyShiftRounded(eb, inv_ee, kShift));
-      frame->height_ratio =
-          static_cast<int32_t>(MultiplyShiftRounded(hd, inv_hb, kShift));
-      frame->has_opposite = true;
-    }
+  if (cb > 0) {
+    const int64_t hb = SquareRoot(cb << (2 * t));
+    frame->has_opposite = BoundedCoefficient(v.eb, v.ee, &frame->sb) &&
+                          BoundedRatio(hd, hb, &frame->height_ratio);
   }
   return true;
+}
+
+// round(x / 2^bits) with halves rounded up, for |x| < 2^61 and
+// 0 < bits < 62.
+inline int64_t RoundedShiftUp(int64_t x, int bits) {
+  return uv_stencil_internal::FloorShift(x + (int64_t{1} << (bits - 1)), bits);
 }
 
 // Eq. (3) of [Váša & Brunnett 2014], the weighted parallelogram
@@ -212,8 +256,8 @@ inline UvStencilUv PredictAffineQ16(const UvStencilFrame &frame,
     //   g_q16 = g * 2^16 - sb * f < 2^45, reduced to Q8 (< 2^37) so that
     //   height_ratio * g_q8 < 2^61; the result stays below 2^54.
     const int64_t g_q16 = g[i] * kUvStencilOne - frame.sb * f[i];
-    const int64_t g_q8 = RoundedShift(g_q16, 8);
-    const int64_t across_q16 = RoundedShift(frame.height_ratio * g_q8, 8);
+    const int64_t g_q8 = RoundedShiftUp(g_q16, 8);
+    const int64_t across_q16 = RoundedShiftUp(frame.height_ratio * g_q8, 8);
     prediction[i] = uv_l[i] * kUvStencilOne + frame.s * f[i] - across_q16;
   }
   return prediction;

@@ -156,6 +156,74 @@ TEST(UvStencilGeometryTest, RejectsExtremeStencils) {
                                      &frame));
 }
 
+// The integer square root behind both heights is floor(sqrt(v)) for every
+// radicand the frame can produce (below 2^62), around perfect squares too,
+// where the double estimate is most likely off by one.
+TEST(UvStencilGeometryTest, SquareRootIsExact) {
+  std::mt19937_64 rng(5);
+  for (int trial = 0; trial < 20000; ++trial) {
+    const int bits = 1 + static_cast<int>(rng() % 62);
+    const int64_t root = static_cast<int64_t>(rng() >> (64 - (bits + 1) / 2));
+    for (const int64_t delta : {int64_t{-1}, int64_t{0}, int64_t{1}}) {
+      const int64_t value = root * root + delta;
+      if (value < 0 || value >= (int64_t{1} << 62)) {
+        continue;
+      }
+      const int64_t r = uv_stencil_internal::SquareRoot(value);
+      ASSERT_LE(r * r, value) << value;
+      ASSERT_GT((r + 1) * (r + 1), value) << value;
+    }
+  }
+}
+
+// The frame depends on the stencil's shape, not its size: the same stencil
+// scaled by 2^k gives the same coordinates up to rounding, also above 14-bit
+// positions, where the edge vectors are scaled down before their products.
+TEST(UvStencilGeometryTest, FrameIsScaleInvariant) {
+  std::mt19937 rng(13);
+  std::uniform_int_distribution<int> coord(0, 200);
+  int compared = 0;
+  for (int trial = 0; trial < 2000; ++trial) {
+    int64_t p[4][3];
+    for (auto &v : p) {
+      for (auto &c : v) {
+        c = coord(rng);
+      }
+    }
+    const auto frame_at = [&](int k, UvStencilFrame *frame) {
+      UvStencilPos q[4];
+      for (int i = 0; i < 4; ++i) {
+        for (int c = 0; c < 3; ++c) {
+          q[i][c] = static_cast<int32_t>(p[i][c] << k);
+        }
+      }
+      return ComputeUvStencilFrame(q[0], q[1], q[2], q[3], true, frame);
+    };
+    UvStencilFrame small;
+    if (!frame_at(0, &small) || !small.has_opposite ||
+        std::abs(small.s) > 4 * kUvStencilOne || small.h < kUvStencilOne / 16 ||
+        small.h > 4 * kUvStencilOne || small.height_ratio > 4 * kUvStencilOne) {
+      continue;
+    }
+    ++compared;
+    for (int k = 1; k <= 22; ++k) {
+      UvStencilFrame large;
+      ASSERT_TRUE(frame_at(k, &large)) << "trial " << trial << " k " << k;
+      ASSERT_TRUE(large.has_opposite);
+      // Exact while no scaling is needed; within 2^-6 of the edge length
+      // once the vectors lose their low bits (the coordinates span 8 bits).
+      const int tolerance = k <= 6 ? 1 : kUvStencilOne / 64;
+      EXPECT_NEAR(large.s, small.s, tolerance) << trial << " " << k;
+      EXPECT_NEAR(large.sb, small.sb, tolerance) << trial << " " << k;
+      EXPECT_NEAR(large.h, small.h, tolerance) << trial << " " << k;
+      EXPECT_NEAR(large.height_ratio, small.height_ratio,
+                  small.height_ratio / 64 + tolerance)
+          << trial << " " << k;
+    }
+  }
+  EXPECT_GT(compared, 500);
+}
+
 // Largest supported inputs: 30-bit positions and UV differences just below
 // 2^20. Every bounded stencil must produce predictions within the int64
 // headroom the header documents (UBSan builds would flag any overflow).
