@@ -302,10 +302,6 @@ bool UvSeamContextCoder<TableT>::CodeBits(BitIoT *io, uint8_t *bits) {
       const uint32_t state_a = vertex_state_[a];
       const uint32_t state_b = vertex_state_[b];
       DRACO_DCHECK(state_a >= kOneEdge && state_b >= kOneEdge);
-      uint8_t *const seams_a =
-          &seams_at_[static_cast<size_t>(a) * num_attributes];
-      uint8_t *const seams_b =
-          &seams_at_[static_cast<size_t>(b) * num_attributes];
       bool earlier = false;
       for (int attribute = 0; attribute < num_attributes; ++attribute) {
         uint8_t *const seams = &seams_at_[attribute * num_vertices];
