@@ -132,7 +132,8 @@ const std::vector<UvPredictionName> &UvPredictionNames() {
        MESH_PREDICTION_TEX_COORDS_LAPLACIAN,
        "lossy Laplacian coding, mean-value weights (draco-uv)"},
       {"auto", UvPrediction::kAuto, PREDICTION_UNDEFINED,
-       "smallest of the lossless schemes above but weighted_multi"},
+       "smallest lossless scheme; weighted_multi only where it saves"
+       " half a bit per texture coordinate"},
   };
   return names;
 }

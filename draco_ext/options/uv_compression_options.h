@@ -28,8 +28,9 @@
 //     laplacian_tutte, laplacian_cotan, laplacian_mv
 //                         lossy Laplacian coding (draco-uv; builds with
 //                         DRACO_UV_LAPLACIAN only)
-//     auto                per attribute, the smallest lossless scheme that
-//                         decodes about as fast as stock Draco
+//     auto                per attribute, the smallest lossless scheme;
+//                         weighted_multi (slower to decode) only where it
+//                         saves half a bit per texture coordinate
 //   -uv_seams draco|context
 //                       coding of attribute seams (context: draco-uv's
 //                       context-modelled crease bits)

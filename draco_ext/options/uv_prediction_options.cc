@@ -143,14 +143,23 @@ StatusOr<size_t> EncodedSize(ExpertEncoder *encoder) {
   return buffer.size();
 }
 
-// Candidates of -uv_pred auto: every lossless scheme that decodes about as
-// fast as stock Draco (so not weighted_multi, nor the lossy Laplacians). Stock
-// Draco's choice comes first so that it wins ties.
+// -uv_pred auto takes weighted_multi, which decodes in about 1.3x stock
+// Draco's instructions where its other candidates take 1.0-1.05x
+// (benchmarks/decode_speed.md), only where it saves at least half a bit per
+// texture coordinate value over the smallest of them: 6-17 % of the UV bytes
+// on the corpus meshes where it does.
+constexpr size_t kValuesPerByteSlowDecodeMustSave = 16;
+
+bool IsSlowToDecode(PredictionSchemeMethod method) {
+  return method == MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI;
+}
+
+// Candidates of -uv_pred auto: every lossless scheme. Stock Draco's choice
+// comes first so that it wins ties.
 std::vector<PredictionSchemeMethod> AutoCandidates() {
   std::vector<PredictionSchemeMethod> candidates;
   for (const UvPredictionName &entry : UvPredictionNames()) {
     if (entry.prediction != UvPrediction::kAuto &&
-        entry.method != MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI &&
         !IsLossyUvPrediction(entry.method)) {
       candidates.push_back(entry.method);
     }
@@ -158,24 +167,37 @@ std::vector<PredictionSchemeMethod> AutoCandidates() {
   return candidates;
 }
 
-// Picks the smallest candidate for |att_id|, leaves it set on |encoder| and
-// returns its summary line.
+// Picks the candidate for |att_id| with the smallest file, counting the
+// schemes that are slow to decode as kValuesPerByteSlowDecodeMustSave
+// values per byte larger; leaves it set on |encoder| and returns its summary
+// line.
 StatusOr<std::string> ChooseSmallestFor(const Mesh &mesh, int att_id,
                                         ExpertEncoder *encoder) {
+  const size_t slow_handicap =
+      (mesh.attribute(att_id)->size() + kValuesPerByteSlowDecodeMustSave - 1) /
+      kValuesPerByteSlowDecodeMustSave;
   PredictionSchemeMethod best_method = PREDICTION_UNDEFINED;
-  size_t best_size = std::numeric_limits<size_t>::max();
+  size_t best_size = 0;
+  size_t best_cost = std::numeric_limits<size_t>::max();
   size_t stock_size = 0;
   for (const PredictionSchemeMethod method : AutoCandidates()) {
     if (!CheckSettingsFor(method, mesh, *encoder, att_id).ok()) {
       continue;
     }
-    DRACO_RETURN_IF_ERROR(encoder->SetAttributePredictionScheme(att_id, method));
+    DRACO_RETURN_IF_ERROR(
+        encoder->SetAttributePredictionScheme(att_id, method));
     const StatusOr<size_t> size = EncodedSize(encoder);
     if (method == PREDICTION_UNDEFINED) {
       DRACO_RETURN_IF_ERROR(size.status());
       stock_size = size.value();
     }
-    if (size.ok() && size.value() < best_size) {
+    if (!size.ok()) {
+      continue;
+    }
+    const size_t cost =
+        size.value() + (IsSlowToDecode(method) ? slow_handicap : 0);
+    if (cost < best_cost) {
+      best_cost = cost;
       best_size = size.value();
       best_method = method;
     }
