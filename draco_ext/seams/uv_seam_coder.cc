@@ -14,20 +14,30 @@
 //
 #include "draco_ext/seams/uv_seam_coder.h"
 
+#include <utility>
+
 namespace draco {
 
 namespace {
 
+// Bit I/O of the encoder: codes the bits it is given and hands out the
+// lengths of the runs of quiet edges, plus one (0 after the last one).
 class EncodingIo {
  public:
+  explicit EncodingIo(std::vector<uint32_t> runs) : runs_(std::move(runs)) {}
   bool Code(uint32_t probability_of_one, bool bit) {
     coder_.EncodeBit(bit, probability_of_one);
     return bit;
+  }
+  uint32_t NextRun() {
+    return next_run_ < runs_.size() ? runs_[next_run_++] + 1 : 0;
   }
   UvSeamRangeEncoder *coder() { return &coder_; }
 
  private:
   UvSeamRangeEncoder coder_;
+  std::vector<uint32_t> runs_;
+  size_t next_run_ = 0;
 };
 
 }  // namespace
@@ -41,7 +51,7 @@ bool EncodeUvSeams(const UvSeamCornerTable &table, int num_attributes,
     return false;
   }
   std::vector<uint8_t> coded = bits;
-  EncodingIo io;
+  EncodingIo io(coder.QuietRuns(bits.data()));
   coder.Code(&io, coded.data());
   *bytes = io.coder()->Finish();
   return true;

@@ -102,15 +102,36 @@ class UvSeamContextCoder {
     return ok && checks_ok;
   }
 
+  // The encoder's run lengths for |bits| (see CodeRun()): per quiet edge
+  // with a seam, in coding order, the quiet edges without seams before it.
+  std::vector<uint32_t> QuietRuns(const uint8_t *bits) const;
+
  private:
   // Code() for kNumAttributes attributes, or num_attributes_ if 0.
   template <int kNumAttributes, class BitIoT>
   bool CodeBits(BitIoT *io, uint8_t *bits);
+  // Codes the bits of the edge opposite |corner| (|opposite| across it,
+  // ends |a| at Next(corner) and |b|) for every attribute at |bit| with the
+  // contexts of the file comment. |implied_seam|: some attribute has a
+  // seam there, so the last bit is one if the others are zero.
+  template <int kNumAttributes, class BitIoT>
+  void CodeEdge(BitIoT *io, uint32_t corner, uint32_t opposite, uint32_t a,
+                uint32_t b, bool implied_seam, uint8_t *bit);
+  // Codes the length of the next run of quiet edges without seams and sets
+  // |run_left| to it, or to kEndless if no quiet edge with a seam follows
+  // (counted down like a run, it stays above num_edges_); false if the
+  // length is out of range.
+  template <class BitIoT>
+  bool CodeRun(BitIoT *io, uint32_t *run_left);
 
-  // A vertex's state: undecided interior edges left (bits 1 and up) and
-  // whether it lies on a boundary (bit 0).
+  // A vertex's state: undecided interior edges left (bits 2 and up), whether
+  // a seam of any attribute has been decided there (bit 1) and whether it
+  // lies on a boundary (bit 0). An edge with neither flag at either end is
+  // quiet.
   static constexpr uint32_t kOnBoundary = 1;
-  static constexpr uint32_t kOneEdge = 2;
+  static constexpr uint32_t kHasSeam = 2;
+  static constexpr uint32_t kOneEdge = 4;
+  static constexpr uint32_t kEndless = 0xFFFFFFFFu;
   // Ring steps to the nearest cut that are told apart: 1 to kMaxSteps, and
   // farther.
   static constexpr int kMaxSteps = 3;
@@ -124,8 +145,16 @@ class UvSeamContextCoder {
   // The other end of the edge, without the steps.
   static constexpr int kNumShortEnds = 4 * 4 * 2;
   static constexpr int kNumEdgeContexts = kNumEnds * kNumShortEnds;
+  // Run lengths plus one are Elias gamma codes of at most kMaxRunBits bits
+  // after the leading one; the unary part and the two bits after the
+  // leading one are adaptive, the rest are coded at probability 1/2.
+  static constexpr int kMaxRunBits = 31;
+  static constexpr int kRunMore = 0;
+  static constexpr int kRunUnary = 1;
+  static constexpr int kRunMantissa = kRunUnary + kMaxRunBits;
+  static constexpr int kNumRunContexts = kRunMantissa + 2 * kMaxRunBits;
 
-  // One adaptive probability of a seam, in 1/65536, and how many bits it
+  // One adaptive probability of a one, in 1/65536, and how many bits it
   // has seen (up to kMaxSeen).
   struct Probability {
     uint16_t p1 = 1u << 15;
@@ -153,13 +182,15 @@ class UvSeamContextCoder {
   template <bool kAtNext>
   int StepPair(uint32_t corner, uint32_t opposite,
                const uint8_t *seam_corners) const;
-  // Context of an end without seams, from its state (2 * left + boundary,
-  // left >= 1): 1, 2 or 3 undecided edges left, each on a boundary or not,
-  // 4 left off the boundary, and more (found measurably better than
-  // splitting the last class by boundary).
+  // Context of an end without seams of this attribute, from its state: 1,
+  // 2 or 3 undecided edges left, each on a boundary or not, 4 left off the
+  // boundary, and more (found measurably better than splitting the last
+  // class by boundary).
   static int QuietEnd(uint32_t state) {
     static constexpr uint8_t kQuietEnd[10] = {0, 0, 0, 1, 2, 3, 4, 5, 6, 7};
-    return kQuietEnd[std::min<uint32_t>(state, 9)];
+    const uint32_t left_and_boundary =
+        ((state >> 1) & ~1u) | (state & kOnBoundary);
+    return kQuietEnd[std::min<uint32_t>(left_and_boundary, 9)];
   }
   static int ShortEnd(uint32_t state, int seams) {
     return std::min(seams, 3) * kNumQuietEnds + QuietEnd(state);
@@ -170,8 +201,9 @@ class UvSeamContextCoder {
                kNumStepPairs +
            step_pair;
   }
+  // Codes |bit| with |probability| and adapts it; returns the bit.
   template <class BitIoT>
-  static bool CodeBit(BitIoT *io, Probability *probability, uint8_t *bit);
+  static bool CodeFlag(BitIoT *io, Probability *probability, bool bit);
 
   const TableT *table_ = nullptr;
   int num_attributes_ = 0;
@@ -184,6 +216,7 @@ class UvSeamContextCoder {
   // Attribute 0, then later attributes without and with an earlier seam on
   // the same edge.
   std::vector<Probability> probabilities_;
+  Probability run_probabilities_[kNumRunContexts];
 };
 
 template <class TableT>
@@ -221,7 +254,47 @@ bool UvSeamContextCoder<TableT>::Init(const TableT &table, int num_attributes) {
   probabilities_.assign(
       num_attributes > 1 ? 3 * kNumEdgeContexts : kNumEdgeContexts,
       Probability());
+  std::fill(run_probabilities_, run_probabilities_ + kNumRunContexts,
+            Probability());
   return true;
+}
+
+template <class TableT>
+std::vector<uint32_t> UvSeamContextCoder<TableT>::QuietRuns(
+    const uint8_t *bits) const {
+  const TableT &table = *table_;
+  const uint32_t num_corners = table.num_corners() / 3 * 3;
+  std::vector<uint8_t> cut(table.num_vertices);  // Boundary or seam.
+  for (uint32_t vertex = 0; vertex < table.num_vertices; ++vertex) {
+    cut[vertex] = vertex_state_[vertex] & kOnBoundary;
+  }
+  std::vector<uint32_t> runs;
+  uint32_t run = 0;
+  for (uint32_t first = 0; first < num_corners; first += 3) {
+    for (int i = 0; i < 3; ++i) {
+      const uint32_t opposite = table.Opposite(first + i);
+      if (opposite == TableT::kBoundary || opposite < first) {
+        continue;
+      }
+      const uint32_t a = table.Vertex(i == 2 ? first : first + i + 1);
+      const uint32_t b = table.Vertex(i == 0 ? first + 2 : first + i - 1);
+      const bool seam = std::any_of(bits, bits + num_attributes_,
+                                    [](uint8_t bit) { return bit != 0; });
+      bits += num_attributes_;
+      if ((cut[a] | cut[b]) == 0) {
+        if (seam) {
+          runs.push_back(run);
+          run = 0;
+        } else {
+          ++run;
+        }
+      }
+      if (seam) {
+        cut[a] = cut[b] = 1;
+      }
+    }
+  }
+  return runs;
 }
 
 template <class TableT>
@@ -255,9 +328,9 @@ int UvSeamContextCoder<TableT>::StepPair(uint32_t corner, uint32_t opposite,
 
 template <class TableT>
 template <class BitIoT>
-inline bool UvSeamContextCoder<TableT>::CodeBit(BitIoT *io,
-                                                Probability *probability,
-                                                uint8_t *bit) {
+inline bool UvSeamContextCoder<TableT>::CodeFlag(BitIoT *io,
+                                                 Probability *probability,
+                                                 bool bit) {
   // 65536 * 2 / (2 * seen + 3): the rate of a count-based estimate, which
   // settles at 1/46.5 (kMaxSeen).
   static constexpr uint16_t kRate[kMaxSeen + 1] = {
@@ -269,13 +342,111 @@ inline bool UvSeamContextCoder<TableT>::CodeBit(BitIoT *io,
   const uint32_t p1 = probability->p1;
   // p1 stays within [1, 65535]; | 1 keeps the coder's probability in
   // [1, 4095].
-  const bool seam = io->Code((p1 >> 4) | 1, *bit != 0);
-  *bit = seam;
+  const bool one = io->Code((p1 >> 4) | 1, bit);
   const uint32_t rate = kRate[probability->seen];
   probability->seen += probability->seen < kMaxSeen;
   probability->p1 = static_cast<uint16_t>(
-      seam ? p1 + (((65536u - p1) * rate) >> 16) : p1 - ((p1 * rate) >> 16));
-  return seam;
+      one ? p1 + (((65536u - p1) * rate) >> 16) : p1 - ((p1 * rate) >> 16));
+  return one;
+}
+
+template <class TableT>
+template <class BitIoT>
+bool UvSeamContextCoder<TableT>::CodeRun(BitIoT *io, uint32_t *run_left) {
+  // The encoder's run length plus one, 0 for none; the decoder's is 0.
+  const uint32_t value = io->NextRun();
+  Probability *const probabilities = run_probabilities_;
+  if (!CodeFlag(io, &probabilities[kRunMore], value != 0)) {
+    *run_left = kEndless;
+    return true;
+  }
+  int length = 0;  // Bits after the leading one.
+  while (CodeFlag(io, &probabilities[kRunUnary + length],
+                  (value >> (length + 1)) != 0)) {
+    if (++length == kMaxRunBits) {
+      return false;
+    }
+  }
+  uint32_t decoded = 1;
+  for (int i = length - 1; i >= 0; --i) {
+    const bool bit = ((value >> i) & 1) != 0;
+    const int rank = length - 1 - i;  // 0 for the bit after the leading one.
+    decoded = (decoded << 1) |
+              (rank < 2 ? CodeFlag(io,
+                                   &probabilities[kRunMantissa +
+                                                  2 * (length - 1) + rank],
+                                   bit)
+                        : io->Code(kUvSeamProbabilityOne / 2, bit));
+  }
+  // A run longer than the edges is corrupt.
+  if (decoded - 1 >= num_edges_) {
+    return false;
+  }
+  *run_left = decoded - 1;
+  return true;
+}
+
+template <class TableT>
+template <int kNumAttributes, class BitIoT>
+inline void UvSeamContextCoder<TableT>::CodeEdge(BitIoT *io, uint32_t corner,
+                                                 uint32_t opposite, uint32_t a,
+                                                 uint32_t b, bool implied_seam,
+                                                 uint8_t *bit) {
+  const int num_attributes =
+      kNumAttributes > 0 ? kNumAttributes : num_attributes_;
+  const size_t num_corners = table_->num_corners() / 3 * 3;
+  const size_t num_vertices = table_->num_vertices;
+  uint32_t *const state = vertex_state_.data();
+  const uint32_t state_a = state[a];
+  const uint32_t state_b = state[b];
+  bool earlier = false;
+  for (int attribute = 0; attribute < num_attributes; ++attribute) {
+    uint8_t *const seams = &seams_at_[attribute * num_vertices];
+    uint8_t *const seam_corners = &seam_corners_[attribute * num_corners];
+    bool seam;
+    if (implied_seam && !earlier && attribute == num_attributes - 1) {
+      seam = true;
+    } else {
+      const int seams_a = seams[a];
+      const int seams_b = seams[b];
+      // The more telling end in full, the other one short.
+      int context;
+      if ((seams_a | seams_b) == 0) {
+        const int end_a = QuietEnd(state_a);
+        const int end_b = QuietEnd(state_b);
+        context = end_a >= end_b ? end_a * kNumShortEnds + end_b
+                                 : end_b * kNumShortEnds + end_a;
+      } else {
+        const int end_a =
+            seams_a == 0
+                ? QuietEnd(state_a)
+                : FullEnd(state_a, seams_a,
+                          StepPair<true>(corner, opposite, seam_corners));
+        const int end_b =
+            seams_b == 0
+                ? QuietEnd(state_b)
+                : FullEnd(state_b, seams_b,
+                          StepPair<false>(corner, opposite, seam_corners));
+        context = end_a >= end_b
+                      ? end_a * kNumShortEnds + ShortEnd(state_b, seams_b)
+                      : end_b * kNumShortEnds + ShortEnd(state_a, seams_a);
+      }
+      const int plane = attribute == 0 ? 0 : 1 + earlier;
+      seam = CodeFlag(io, &probabilities_[plane * kNumEdgeContexts + context],
+                      bit[attribute] != 0);
+    }
+    bit[attribute] = seam;
+    if (seam) {
+      // Counts saturate (their contexts do at 3).
+      seams[a] = static_cast<uint8_t>(std::min(seams[a] + 1, 255));
+      seams[b] = static_cast<uint8_t>(std::min(seams[b] + 1, 255));
+      seam_corners[corner] = 1;
+      seam_corners[opposite] = 1;
+      state[a] |= kHasSeam;
+      state[b] |= kHasSeam;
+      earlier = true;
+    }
+  }
 }
 
 template <class TableT>
@@ -284,73 +455,48 @@ bool UvSeamContextCoder<TableT>::CodeBits(BitIoT *io, uint8_t *bits) {
   const TableT &table = *table_;
   const int num_attributes =
       kNumAttributes > 0 ? kNumAttributes : num_attributes_;
-  const size_t num_corners = table.num_corners() / 3 * 3;
-  const size_t num_vertices = table.num_vertices;
+  const uint32_t num_corners = table.num_corners() / 3 * 3;
+  uint32_t *const state = vertex_state_.data();
   uint8_t *bit = bits;
+  uint32_t run_left;
+  if (!CodeRun(io, &run_left)) {
+    return false;
+  }
   for (uint32_t first = 0; first < num_corners; first += 3) {
     const uint32_t v[3] = {table.Vertex(first), table.Vertex(first + 1),
                            table.Vertex(first + 2)};
     for (int i = 0; i < 3; ++i) {
       const uint32_t corner = first + i;
       const uint32_t opposite = table.Opposite(corner);
-      // Boundary edges and edges of earlier faces have no bit.
-      if (opposite == TableT::kBoundary || opposite < first) {
+      // Boundary edges (kBoundary + 1 wraps to 0) and edges of earlier faces
+      // have no bit.
+      if (opposite + 1 <= first) {
         continue;
       }
       const uint32_t a = v[i == 2 ? 0 : i + 1];  // At Next(corner).
       const uint32_t b = v[i == 0 ? 2 : i - 1];
-      const uint32_t state_a = vertex_state_[a];
-      const uint32_t state_b = vertex_state_[b];
-      DRACO_DCHECK(state_a >= kOneEdge && state_b >= kOneEdge);
-      uint8_t *const seams_a =
-          &seams_at_[static_cast<size_t>(a) * num_attributes];
-      uint8_t *const seams_b =
-          &seams_at_[static_cast<size_t>(b) * num_attributes];
-      bool earlier = false;
-      for (int attribute = 0; attribute < num_attributes; ++attribute) {
-        uint8_t *const seams = &seams_at_[attribute * num_vertices];
-        uint8_t *const seam_corners = &seam_corners_[attribute * num_corners];
-        const int seams_a = seams[a];
-        const int seams_b = seams[b];
-        // The more telling end in full, the other one short.
-        int context;
-        if ((seams_a | seams_b) == 0) {
-          const int end_a = QuietEnd(state_a);
-          const int end_b = QuietEnd(state_b);
-          context = end_a >= end_b ? end_a * kNumShortEnds + end_b
-                                   : end_b * kNumShortEnds + end_a;
-        } else {
-          const int end_a =
-              seams_a == 0
-                  ? QuietEnd(state_a)
-                  : FullEnd(state_a, seams_a,
-                            StepPair<true>(corner, opposite, seam_corners));
-          const int end_b =
-              seams_b == 0
-                  ? QuietEnd(state_b)
-                  : FullEnd(state_b, seams_b,
-                            StepPair<false>(corner, opposite, seam_corners));
-          context = end_a >= end_b
-                        ? end_a * kNumShortEnds + ShortEnd(state_b, seams_b)
-                        : end_b * kNumShortEnds + ShortEnd(state_a, seams_a);
-        }
-        const int plane = attribute == 0 ? 0 : 1 + earlier;
-        const bool seam = CodeBit(
-            io, &probabilities_[plane * kNumEdgeContexts + context], bit++);
-        if (seam) {
-          // Counts saturate (their contexts do at 3).
-          seams[a] = static_cast<uint8_t>(std::min(seams[a] + 1, 255));
-          seams[b] = static_cast<uint8_t>(std::min(seams[b] + 1, 255));
-          seam_corners[corner] = 1;
-          seam_corners[opposite] = 1;
-          earlier = true;
+      DRACO_DCHECK(state[a] >= kOneEdge && state[b] >= kOneEdge);
+      if (((state[a] | state[b]) & (kOnBoundary | kHasSeam)) != 0) {
+        CodeEdge<kNumAttributes>(io, corner, opposite, a, b, false, bit);
+      } else if (run_left != 0) {
+        // A quiet edge inside a run: no seam.
+        --run_left;
+        std::fill(bit, bit + num_attributes, 0);
+      } else {
+        // The quiet edge that ends the run has a seam.
+        CodeEdge<kNumAttributes>(io, corner, opposite, a, b, true, bit);
+        if (!CodeRun(io, &run_left)) {
+          return false;
         }
       }
-      vertex_state_[a] -= kOneEdge;
-      vertex_state_[b] -= kOneEdge;
+      bit += num_attributes;
+      state[a] -= kOneEdge;
+      state[b] -= kOneEdge;
     }
   }
-  return true;
+  // A run that the quiet edges did not use up is corrupt. (kEndless stays
+  // above num_edges_: there are fewer than 2^31 edges.)
+  return run_left > num_edges_;
 }
 
 // Encodes |bits| (Draco's seam bits of |table|, edge-major, num_edges() *
@@ -367,6 +513,7 @@ class UvSeamDecodingIo {
   bool Code(uint32_t probability_of_one, bool /* bit */) {
     return coder_.DecodeBit(probability_of_one);
   }
+  uint32_t NextRun() const { return 0; }
   const UvSeamRangeDecoder &coder() const { return coder_; }
 
  private:
