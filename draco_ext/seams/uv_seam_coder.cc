@@ -24,20 +24,23 @@ namespace {
 // lengths of the runs of quiet edges, plus one (0 after the last one).
 class EncodingIo {
  public:
-  explicit EncodingIo(std::vector<uint32_t> runs) : runs_(std::move(runs)) {}
+  explicit EncodingIo(std::vector<std::vector<uint32_t>> runs)
+      : runs_(std::move(runs)), next_run_(runs_.size(), 0) {}
   bool Code(uint32_t probability_of_one, bool bit) {
     coder_.EncodeBit(bit, probability_of_one);
     return bit;
   }
-  uint32_t NextRun() {
-    return next_run_ < runs_.size() ? runs_[next_run_++] + 1 : 0;
+  uint32_t NextRun(int quiet_class) {
+    const std::vector<uint32_t> &runs = runs_[quiet_class];
+    size_t &next = next_run_[quiet_class];
+    return next < runs.size() ? runs[next++] + 1 : 0;
   }
   UvSeamRangeEncoder *coder() { return &coder_; }
 
  private:
   UvSeamRangeEncoder coder_;
-  std::vector<uint32_t> runs_;
-  size_t next_run_ = 0;
+  std::vector<std::vector<uint32_t>> runs_;
+  std::vector<size_t> next_run_;
 };
 
 }  // namespace

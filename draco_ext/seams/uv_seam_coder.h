@@ -102,9 +102,10 @@ class UvSeamContextCoder {
     return ok && checks_ok;
   }
 
-  // The encoder's run lengths for |bits| (see CodeRun()): per quiet edge
-  // with a seam, in coding order, the quiet edges without seams before it.
-  std::vector<uint32_t> QuietRuns(const uint8_t *bits) const;
+  // The encoder's run lengths for |bits| (see CodeRun()): per class of
+  // quiet edges (QuietClass()) and quiet edge of that class with a seam, in
+  // coding order, the edges of the class without seams before it.
+  std::vector<std::vector<uint32_t>> QuietRuns(const uint8_t *bits) const;
 
  private:
   // Code() for kNumAttributes attributes, or num_attributes_ if 0.
@@ -117,12 +118,12 @@ class UvSeamContextCoder {
   template <int kNumAttributes, class BitIoT>
   void CodeEdge(BitIoT *io, uint32_t corner, uint32_t opposite, uint32_t a,
                 uint32_t b, bool implied_seam, uint8_t *bit);
-  // Codes the length of the next run of quiet edges without seams and sets
-  // |run_left| to it, or to kEndless if no quiet edge with a seam follows
-  // (counted down like a run, it stays above num_edges_); false if the
-  // length is out of range.
+  // Codes the length of the next run of quiet edges of class |quiet_class|
+  // and sets |countdown| to the quiet edges of the class up to and including
+  // the next one with a seam, or to kEndless if none follows (counted down,
+  // it stays above num_edges_); false if the length is out of range.
   template <class BitIoT>
-  bool CodeRun(BitIoT *io, uint32_t *run_left);
+  bool CodeRun(BitIoT *io, int quiet_class, uint32_t *countdown);
 
   // A vertex's state: undecided interior edges left (bits 2 and up), whether
   // a seam of any attribute has been decided there (bit 1) and whether it
@@ -153,6 +154,14 @@ class UvSeamContextCoder {
   static constexpr int kRunUnary = 1;
   static constexpr int kRunMantissa = kRunUnary + kMaxRunBits;
   static constexpr int kNumRunContexts = kRunMantissa + 2 * kMaxRunBits;
+  // Quiet edges form classes by the fewer undecided edges left at either
+  // end (1, 2, 3+; 0, impossible on a manifold table, counts as 1); each
+  // class has its own runs.
+  static constexpr int kNumQuietClasses = 3;
+  static int QuietClass(uint32_t state_a, uint32_t state_b) {
+    const uint32_t fewer = std::min(state_a, state_b);
+    return (fewer >= 2 * kOneEdge) + (fewer >= 3 * kOneEdge);
+  }
 
   // One adaptive probability of a one, in 1/65536, and how many bits it
   // has seen (up to kMaxSeen).
@@ -216,7 +225,7 @@ class UvSeamContextCoder {
   // Attribute 0, then later attributes without and with an earlier seam on
   // the same edge.
   std::vector<Probability> probabilities_;
-  Probability run_probabilities_[kNumRunContexts];
+  Probability run_probabilities_[kNumQuietClasses][kNumRunContexts];
 };
 
 template <class TableT>
@@ -226,7 +235,10 @@ bool UvSeamContextCoder<TableT>::Init(const TableT &table, int num_attributes) {
   num_edges_ = 0;
   const uint32_t num_vertices = table.num_vertices;
   const uint32_t num_corners = table.num_corners() / 3 * 3;
+  // A vertex of a manifold table has one interior edge per corner, one
+  // fewer on a boundary. (Other tables only get other contexts.)
   vertex_state_.assign(num_vertices, 0);
+  uint32_t *const state = vertex_state_.data();
   for (uint32_t first = 0; first < num_corners; first += 3) {
     const uint32_t v[3] = {table.Vertex(first), table.Vertex(first + 1),
                            table.Vertex(first + 2)};
@@ -234,42 +246,40 @@ bool UvSeamContextCoder<TableT>::Init(const TableT &table, int num_attributes) {
       return false;
     }
     for (int i = 0; i < 3; ++i) {
+      state[v[i]] += kOneEdge;
       const uint32_t opposite = table.Opposite(first + i);
-      const uint32_t a = v[i == 2 ? 0 : i + 1];
-      const uint32_t b = v[i == 0 ? 2 : i - 1];
       if (opposite == TableT::kBoundary) {
-        vertex_state_[a] |= kOnBoundary;
-        vertex_state_[b] |= kOnBoundary;
+        state[v[i == 2 ? 0 : i + 1]] |= kOnBoundary;
+        state[v[i == 0 ? 2 : i - 1]] |= kOnBoundary;
       } else if (opposite >= num_corners) {
         return false;
-      } else if (opposite >= first) {  // Not an edge of an earlier face.
-        vertex_state_[a] += kOneEdge;
-        vertex_state_[b] += kOneEdge;
-        ++num_edges_;
+      } else {
+        num_edges_ += opposite >= first;  // Not an edge of an earlier face.
       }
     }
+  }
+  for (uint32_t vertex = 0; vertex < num_vertices; ++vertex) {
+    state[vertex] -= (state[vertex] & kOnBoundary) * kOneEdge;
   }
   seams_at_.assign(static_cast<size_t>(num_vertices) * num_attributes, 0);
   seam_corners_.assign(static_cast<size_t>(num_corners) * num_attributes, 0);
   probabilities_.assign(
       num_attributes > 1 ? 3 * kNumEdgeContexts : kNumEdgeContexts,
       Probability());
-  std::fill(run_probabilities_, run_probabilities_ + kNumRunContexts,
-            Probability());
+  for (Probability *probabilities : run_probabilities_) {
+    std::fill(probabilities, probabilities + kNumRunContexts, Probability());
+  }
   return true;
 }
 
 template <class TableT>
-std::vector<uint32_t> UvSeamContextCoder<TableT>::QuietRuns(
+std::vector<std::vector<uint32_t>> UvSeamContextCoder<TableT>::QuietRuns(
     const uint8_t *bits) const {
   const TableT &table = *table_;
   const uint32_t num_corners = table.num_corners() / 3 * 3;
-  std::vector<uint8_t> cut(table.num_vertices);  // Boundary or seam.
-  for (uint32_t vertex = 0; vertex < table.num_vertices; ++vertex) {
-    cut[vertex] = vertex_state_[vertex] & kOnBoundary;
-  }
-  std::vector<uint32_t> runs;
-  uint32_t run = 0;
+  std::vector<uint32_t> state = vertex_state_;
+  std::vector<std::vector<uint32_t>> runs(kNumQuietClasses);
+  uint32_t run[kNumQuietClasses] = {};
   for (uint32_t first = 0; first < num_corners; first += 3) {
     for (int i = 0; i < 3; ++i) {
       const uint32_t opposite = table.Opposite(first + i);
@@ -281,17 +291,21 @@ std::vector<uint32_t> UvSeamContextCoder<TableT>::QuietRuns(
       const bool seam = std::any_of(bits, bits + num_attributes_,
                                     [](uint8_t bit) { return bit != 0; });
       bits += num_attributes_;
-      if ((cut[a] | cut[b]) == 0) {
+      if (((state[a] | state[b]) & (kOnBoundary | kHasSeam)) == 0) {
+        const int quiet_class = QuietClass(state[a], state[b]);
         if (seam) {
-          runs.push_back(run);
-          run = 0;
+          runs[quiet_class].push_back(run[quiet_class]);
+          run[quiet_class] = 0;
         } else {
-          ++run;
+          ++run[quiet_class];
         }
       }
       if (seam) {
-        cut[a] = cut[b] = 1;
+        state[a] |= kHasSeam;
+        state[b] |= kHasSeam;
       }
+      state[a] -= kOneEdge;
+      state[b] -= kOneEdge;
     }
   }
   return runs;
@@ -352,12 +366,13 @@ inline bool UvSeamContextCoder<TableT>::CodeFlag(BitIoT *io,
 
 template <class TableT>
 template <class BitIoT>
-bool UvSeamContextCoder<TableT>::CodeRun(BitIoT *io, uint32_t *run_left) {
+bool UvSeamContextCoder<TableT>::CodeRun(BitIoT *io, int quiet_class,
+                                         uint32_t *countdown) {
   // The encoder's run length plus one, 0 for none; the decoder's is 0.
-  const uint32_t value = io->NextRun();
-  Probability *const probabilities = run_probabilities_;
+  const uint32_t value = io->NextRun(quiet_class);
+  Probability *const probabilities = run_probabilities_[quiet_class];
   if (!CodeFlag(io, &probabilities[kRunMore], value != 0)) {
-    *run_left = kEndless;
+    *countdown = kEndless;
     return true;
   }
   int length = 0;  // Bits after the leading one.
@@ -379,10 +394,10 @@ bool UvSeamContextCoder<TableT>::CodeRun(BitIoT *io, uint32_t *run_left) {
                         : io->Code(kUvSeamProbabilityOne / 2, bit));
   }
   // A run longer than the edges is corrupt.
-  if (decoded - 1 >= num_edges_) {
+  if (decoded > num_edges_) {
     return false;
   }
-  *run_left = decoded - 1;
+  *countdown = decoded;
   return true;
 }
 
@@ -458,10 +473,9 @@ bool UvSeamContextCoder<TableT>::CodeBits(BitIoT *io, uint8_t *bits) {
   const uint32_t num_corners = table.num_corners() / 3 * 3;
   uint32_t *const state = vertex_state_.data();
   uint8_t *bit = bits;
-  uint32_t run_left;
-  if (!CodeRun(io, &run_left)) {
-    return false;
-  }
+  // Per quiet class, 0 before its first quiet edge and after one with a
+  // seam: the next one starts a run.
+  uint32_t countdown[kNumQuietClasses] = {};
   for (uint32_t first = 0; first < num_corners; first += 3) {
     const uint32_t v[3] = {table.Vertex(first), table.Vertex(first + 1),
                            table.Vertex(first + 2)};
@@ -475,18 +489,19 @@ bool UvSeamContextCoder<TableT>::CodeBits(BitIoT *io, uint8_t *bits) {
       }
       const uint32_t a = v[i == 2 ? 0 : i + 1];  // At Next(corner).
       const uint32_t b = v[i == 0 ? 2 : i - 1];
-      DRACO_DCHECK(state[a] >= kOneEdge && state[b] >= kOneEdge);
       if (((state[a] | state[b]) & (kOnBoundary | kHasSeam)) != 0) {
         CodeEdge<kNumAttributes>(io, corner, opposite, a, b, false, bit);
-      } else if (run_left != 0) {
-        // A quiet edge inside a run: no seam.
-        --run_left;
-        std::fill(bit, bit + num_attributes, 0);
       } else {
-        // The quiet edge that ends the run has a seam.
-        CodeEdge<kNumAttributes>(io, corner, opposite, a, b, true, bit);
-        if (!CodeRun(io, &run_left)) {
+        const int quiet_class = QuietClass(state[a], state[b]);
+        uint32_t *const left = &countdown[quiet_class];
+        if (*left == 0 && !CodeRun(io, quiet_class, left)) {
           return false;
+        }
+        if (--*left != 0) {
+          std::fill(bit, bit + num_attributes, 0);
+        } else {
+          // The quiet edge that ends the run has a seam.
+          CodeEdge<kNumAttributes>(io, corner, opposite, a, b, true, bit);
         }
       }
       bit += num_attributes;
@@ -496,7 +511,10 @@ bool UvSeamContextCoder<TableT>::CodeBits(BitIoT *io, uint8_t *bits) {
   }
   // A run that the quiet edges did not use up is corrupt. (kEndless stays
   // above num_edges_: there are fewer than 2^31 edges.)
-  return run_left > num_edges_;
+  return std::all_of(countdown, countdown + kNumQuietClasses,
+                     [this](uint32_t left) {
+                       return left == 0 || left > num_edges_;
+                     });
 }
 
 // Encodes |bits| (Draco's seam bits of |table|, edge-major, num_edges() *
@@ -513,7 +531,7 @@ class UvSeamDecodingIo {
   bool Code(uint32_t probability_of_one, bool /* bit */) {
     return coder_.DecodeBit(probability_of_one);
   }
-  uint32_t NextRun() const { return 0; }
+  uint32_t NextRun(int /* quiet_class */) const { return 0; }
   const UvSeamRangeDecoder &coder() const { return coder_; }
 
  private:
