@@ -476,37 +476,44 @@ bool UvSeamContextCoder<TableT>::CodeBits(BitIoT *io, uint8_t *bits) {
   // Per quiet class, 0 before its first quiet edge and after one with a
   // seam: the next one starts a run.
   uint32_t countdown[kNumQuietClasses] = {};
-  for (uint32_t first = 0; first < num_corners; first += 3) {
-    const uint32_t v[3] = {table.Vertex(first), table.Vertex(first + 1),
-                           table.Vertex(first + 2)};
-    for (int i = 0; i < 3; ++i) {
-      const uint32_t corner = first + i;
-      const uint32_t opposite = table.Opposite(corner);
-      // Boundary edges (kBoundary + 1 wraps to 0) and edges of earlier faces
-      // have no bit.
-      if (opposite + 1 <= first) {
-        continue;
+  // Codes the edge opposite |corner| of the face starting at |first|, with
+  // ends |a| at Next(corner) and |b|; false on a corrupt run length.
+  const auto code_edge = [&](uint32_t first, uint32_t corner, uint32_t a,
+                             uint32_t b) {
+    const uint32_t opposite = table.Opposite(corner);
+    // Boundary edges (kBoundary + 1 wraps to 0) and edges of earlier faces
+    // have no bit.
+    if (opposite + 1 <= first) {
+      return true;
+    }
+    if (((state[a] | state[b]) & (kOnBoundary | kHasSeam)) != 0) {
+      CodeEdge<kNumAttributes>(io, corner, opposite, a, b, false, bit);
+    } else {
+      const int quiet_class = QuietClass(state[a], state[b]);
+      uint32_t *const left = &countdown[quiet_class];
+      if (*left == 0 && !CodeRun(io, quiet_class, left)) {
+        return false;
       }
-      const uint32_t a = v[i == 2 ? 0 : i + 1];  // At Next(corner).
-      const uint32_t b = v[i == 0 ? 2 : i - 1];
-      if (((state[a] | state[b]) & (kOnBoundary | kHasSeam)) != 0) {
-        CodeEdge<kNumAttributes>(io, corner, opposite, a, b, false, bit);
+      if (--*left != 0) {
+        std::fill(bit, bit + num_attributes, 0);
       } else {
-        const int quiet_class = QuietClass(state[a], state[b]);
-        uint32_t *const left = &countdown[quiet_class];
-        if (*left == 0 && !CodeRun(io, quiet_class, left)) {
-          return false;
-        }
-        if (--*left != 0) {
-          std::fill(bit, bit + num_attributes, 0);
-        } else {
-          // The quiet edge that ends the run has a seam.
-          CodeEdge<kNumAttributes>(io, corner, opposite, a, b, true, bit);
-        }
+        // The quiet edge that ends the run has a seam.
+        CodeEdge<kNumAttributes>(io, corner, opposite, a, b, true, bit);
       }
-      bit += num_attributes;
-      state[a] -= kOneEdge;
-      state[b] -= kOneEdge;
+    }
+    bit += num_attributes;
+    state[a] -= kOneEdge;
+    state[b] -= kOneEdge;
+    return true;
+  };
+  for (uint32_t first = 0; first < num_corners; first += 3) {
+    const uint32_t v0 = table.Vertex(first);
+    const uint32_t v1 = table.Vertex(first + 1);
+    const uint32_t v2 = table.Vertex(first + 2);
+    if (!code_edge(first, first, v1, v2) ||
+        !code_edge(first, first + 1, v2, v0) ||
+        !code_edge(first, first + 2, v0, v1)) {
+      return false;
     }
   }
   // A run that the quiet edges did not use up is corrupt. (kEndless stays
