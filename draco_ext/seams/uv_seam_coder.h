@@ -88,8 +88,9 @@ class UvSeamContextCoder {
   size_t num_edges() const { return num_edges_; }
 
   // Codes num_edges() * num_attributes bits at |bits| (edge-major; read by
-  // the encoder, written by the decoder), then the check bits; false if a
-  // check bit decodes as one.
+  // the encoder, written by the decoder, which passes zeros: the bits of
+  // quiet edges inside runs are left alone), then the check bits; false if
+  // a check bit decodes as one.
   template <class BitIoT>
   bool Code(BitIoT *io, uint8_t *bits) {
     // One attribute (the common case) with a constant count.
@@ -494,9 +495,7 @@ bool UvSeamContextCoder<TableT>::CodeBits(BitIoT *io, uint8_t *bits) {
       if (*left == 0 && !CodeRun(io, quiet_class, left)) {
         return false;
       }
-      if (--*left != 0) {
-        std::fill(bit, bit + num_attributes, 0);
-      } else {
+      if (--*left == 0) {
         // The quiet edge that ends the run has a seam.
         CodeEdge<kNumAttributes>(io, corner, opposite, a, b, true, bit);
       }
@@ -557,7 +556,7 @@ bool DecodeUvSeams(const TableT &table, int num_attributes, const uint8_t *data,
   if (!coder.Init(table, num_attributes)) {
     return false;
   }
-  bits->resize(coder.num_edges() * num_attributes);
+  bits->assign(coder.num_edges() * num_attributes, 0);
   UvSeamDecodingIo io(data, size);
   return coder.Code(&io, bits->data()) && io.coder().Finish();
 }
