@@ -269,6 +269,7 @@ bool UvSeamContextCoder<TableT>::Init(const TableT &table, int num_attributes) {
       Probability());
   for (Probability *probabilities : run_probabilities_) {
     std::fill(probabilities, probabilities + kNumRunContexts, Probability());
+    probabilities[kRunUnary].p1 = 8192;
   }
   return true;
 }
