@@ -269,7 +269,9 @@ bool UvSeamContextCoder<TableT>::Init(const TableT &table, int num_attributes) {
       Probability());
   for (Probability *probabilities : run_probabilities_) {
     std::fill(probabilities, probabilities + kNumRunContexts, Probability());
-    probabilities[kRunUnary].p1 = 8192;
+    // A run's first unary bit starts at 1/4: on small meshes, where the
+    // warm-up counts, runs are short.
+    probabilities[kRunUnary].p1 = 1u << 14;
   }
   return true;
 }
