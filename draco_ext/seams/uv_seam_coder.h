@@ -35,9 +35,16 @@
 // has a seam on the same edge (UV sets and per-corner normals often share
 // seams). Each context has one adaptive probability (a shift update that
 // starts fast, as in LZMA-like coders with a count-based warm-up), which
-// drives a binary range coder (uv_seam_range_coder.h). Everything is
-// integer arithmetic on the connectivity alone, so the decoded seams,
-// vertices and attribute values are exactly those of stock Draco.
+// drives a binary range coder (uv_seam_range_coder.h).
+//
+// Most edges are quiet: no seam and no boundary at either end yet, and
+// seams there are rare. As in the run mode of LOCO-I / JPEG-LS (Weinberger,
+// Seroussi & Sapiro, IEEE TIP 2000) and CALIC's binary mode (Wu & Memon,
+// IEEE TCOM 1997), quiet edges get no bit each: per class of quiet edges the
+// coder codes the number of them without a seam before the next one with a
+// seam (an adaptive Elias gamma code), so a quiet edge costs a countdown.
+// Everything is integer arithmetic on the connectivity alone, so the decoded
+// seams, vertices and attribute values are exactly those of stock Draco.
 #ifndef DRACO_EXT_SEAMS_UV_SEAM_CODER_H_
 #define DRACO_EXT_SEAMS_UV_SEAM_CODER_H_
 
@@ -147,9 +154,10 @@ class UvSeamContextCoder {
   // The other end of the edge, without the steps.
   static constexpr int kNumShortEnds = 4 * 4 * 2;
   static constexpr int kNumEdgeContexts = kNumEnds * kNumShortEnds;
-  // Run lengths plus one are Elias gamma codes of at most kMaxRunBits bits
-  // after the leading one; the unary part and the two bits after the
-  // leading one are adaptive, the rest are coded at probability 1/2.
+  // A run starts with a flag, whether a quiet edge with a seam follows at
+  // all; then its length plus one as an Elias gamma code of at most
+  // kMaxRunBits bits after the leading one: the unary part and the two bits
+  // after the leading one are adaptive, the rest coded at probability 1/2.
   static constexpr int kMaxRunBits = 31;
   static constexpr int kRunMore = 0;
   static constexpr int kRunUnary = 1;
