@@ -95,6 +95,67 @@ TEST(UvSeamCoderTest, RoundTripsArbitrarySeamSetsOfSeveralAttributes) {
   }
 }
 
+// Quiet edges (no seam or boundary at either end yet) are coded as runs
+// per class: seam sets that start, end or never end runs, on closed meshes
+// and meshes with boundaries, with seams only in some of several attributes
+// (the last attribute's bit on an edge that ends a run is implied).
+TEST(UvSeamCoderTest, RoundTripsRunEdgeCases) {
+  for (const std::string name :
+       {"cube_att.obj", "sphere.obj", "bun_zipper.ply", "octagon.obj"}) {
+    const auto mesh = ReadDracoTestMesh(name);
+    ASSERT_NE(mesh, nullptr);
+    const UvSeamCornerTable table = CornerTableOf(*mesh);
+    for (const int num_attributes : {1, 2, 3}) {
+      const size_t num_bits = NumBits(table, num_attributes);
+      const size_t num_edges = num_bits / num_attributes;
+      ASSERT_GT(num_edges, 0u) << name;
+      for (const int attribute : {0, num_attributes - 1}) {
+        // Seams on the first edge, the last edge, both, every edge, every
+        // 7th edge, and none.
+        std::vector<std::vector<size_t>> seam_sets = {
+            {0}, {num_edges - 1}, {0, num_edges - 1}, {}};
+        std::vector<size_t> every, every_7th;
+        for (size_t edge = 0; edge < num_edges; ++edge) {
+          every.push_back(edge);
+          if (edge % 7 == 3) {
+            every_7th.push_back(edge);
+          }
+        }
+        seam_sets.push_back(every);
+        seam_sets.push_back(every_7th);
+        for (const std::vector<size_t> &seams : seam_sets) {
+          std::vector<uint8_t> bits(num_bits, 0);
+          for (const size_t edge : seams) {
+            bits[edge * num_attributes + attribute] = 1;
+          }
+          EXPECT_TRUE(RoundTrips(table, num_attributes, bits))
+              << name << " " << num_attributes << " attribute " << attribute
+              << " seams " << seams.size();
+        }
+      }
+    }
+  }
+}
+
+// A lone seam edge anywhere in a mesh of hundreds or thousands of quiet
+// edges costs a few bytes, not bits per edge.
+TEST(UvSeamCoderTest, LongQuietRunsCostFewBytes) {
+  for (const std::string name : {"sphere.obj", "bun_zipper.ply"}) {
+    const auto mesh = ReadDracoTestMesh(name);
+    ASSERT_NE(mesh, nullptr);
+    const UvSeamCornerTable table = CornerTableOf(*mesh);
+    const size_t num_edges = NumBits(table, 1);
+    ASSERT_GE(num_edges, 300u) << name;
+    for (const size_t edge : {size_t{0}, num_edges / 2, num_edges - 1}) {
+      std::vector<uint8_t> bits(num_edges, 0);
+      bits[edge] = 1;
+      std::vector<uint8_t> bytes;
+      ASSERT_TRUE(EncodeUvSeams(table, 1, bits, &bytes));
+      EXPECT_LE(bytes.size(), 8u) << name << " edge " << edge;
+    }
+  }
+}
+
 TEST(UvSeamCoderTest, HandlesMeshesWithoutAttributesOrInteriorEdges) {
   const auto mesh = ReadDracoTestMesh("multiple_isolated_triangles.obj");
   ASSERT_NE(mesh, nullptr);
