@@ -133,7 +133,7 @@ const std::vector<UvPredictionName> &UvPredictionNames() {
        "lossy Laplacian coding, mean-value weights (draco-uv)"},
       {"auto", UvPrediction::kAuto, PREDICTION_UNDEFINED,
        "smallest lossless scheme; weighted_multi only where it saves"
-       " half a bit per texture coordinate"},
+       " half a bit per UV vertex"},
   };
   return names;
 }

@@ -30,7 +30,7 @@
 //                         DRACO_UV_LAPLACIAN only)
 //     auto                per attribute, the smallest lossless scheme;
 //                         weighted_multi (slower to decode) only where it
-//                         saves half a bit per texture coordinate
+//                         saves half a bit per UV vertex
 //   -uv_seams draco|context
 //                       coding of attribute seams (context: draco-uv's
 //                       context-modelled crease bits)

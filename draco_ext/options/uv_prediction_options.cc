@@ -14,8 +14,11 @@
 //
 #include "draco_ext/options/uv_prediction_options.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
+#include <utility>
 #include <vector>
 
 #include "draco/core/encoder_buffer.h"
@@ -146,9 +149,25 @@ StatusOr<size_t> EncodedSize(ExpertEncoder *encoder) {
 // -uv_pred auto takes weighted_multi, which decodes in about 1.3x stock
 // Draco's instructions where its other candidates take 1.0-1.05x
 // (benchmarks/decode_speed.md), only where it saves at least half a bit per
-// texture coordinate value over the smallest of them: 6-17 % of the UV bytes
-// on the corpus meshes where it does.
-constexpr size_t kValuesPerByteSlowDecodeMustSave = 16;
+// UV vertex over the smallest of them: 6-17 % of the UV bytes on the corpus
+// meshes where it does.
+constexpr size_t kUvVerticesPerByteSlowDecodeMustSave = 16;
+
+// UV vertices of the TEX_COORD attribute |att_id|: distinct pairs of
+// position and texture coordinate values, the entries Draco codes (and the
+// decoder predicts) one by one.
+size_t NumUvVertices(const Mesh &mesh, int att_id) {
+  const PointAttribute *const uv = mesh.attribute(att_id);
+  const PointAttribute *const pos =
+      mesh.GetNamedAttribute(GeometryAttribute::POSITION);
+  std::vector<std::pair<uint32_t, uint32_t>> pairs(mesh.num_points());
+  for (PointIndex p(0); p < mesh.num_points(); ++p) {
+    pairs[p.value()] = {pos == nullptr ? 0 : pos->mapped_index(p).value(),
+                        uv->mapped_index(p).value()};
+  }
+  std::sort(pairs.begin(), pairs.end());
+  return std::unique(pairs.begin(), pairs.end()) - pairs.begin();
+}
 
 bool IsSlowToDecode(PredictionSchemeMethod method) {
   return method == MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI;
@@ -168,14 +187,14 @@ std::vector<PredictionSchemeMethod> AutoCandidates() {
 }
 
 // Picks the candidate for |att_id| with the smallest file, counting the
-// schemes that are slow to decode as kValuesPerByteSlowDecodeMustSave
-// values per byte larger; leaves it set on |encoder| and returns its summary
-// line.
+// schemes that are slow to decode one byte larger per
+// kUvVerticesPerByteSlowDecodeMustSave UV vertices; leaves it set on
+// |encoder| and returns its summary line.
 StatusOr<std::string> ChooseSmallestFor(const Mesh &mesh, int att_id,
                                         ExpertEncoder *encoder) {
-  const size_t slow_handicap =
-      (mesh.attribute(att_id)->size() + kValuesPerByteSlowDecodeMustSave - 1) /
-      kValuesPerByteSlowDecodeMustSave;
+  const size_t slow_handicap = (NumUvVertices(mesh, att_id) +
+                                kUvVerticesPerByteSlowDecodeMustSave - 1) /
+                               kUvVerticesPerByteSlowDecodeMustSave;
   PredictionSchemeMethod best_method = PREDICTION_UNDEFINED;
   size_t best_size = 0;
   size_t best_cost = std::numeric_limits<size_t>::max();

@@ -20,7 +20,9 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "draco_ext/options/uv_prediction_options.h"
@@ -105,8 +107,9 @@ TEST_F(UvConfigureTest, AppliesTheSeamCodingThenThePrediction) {
 
 // -uv_pred auto measures its candidates with the seam coding already set:
 // with either seam coding it picks the smallest candidate with that coding,
-// weighted_multi (slower to decode) counted half a bit per texture
-// coordinate value larger. Both outcomes occur on these meshes.
+// weighted_multi (slower to decode) counted half a bit per UV vertex
+// (distinct position and texture coordinate pair) larger. Both outcomes
+// occur on these meshes.
 TEST_F(UvConfigureTest, AutoMeasuresCandidatesWithTheChosenSeamCoding) {
   std::vector<std::string> paths = TexturedObjPlyMeshPaths();
   for (const std::string &name : DracoTestdataTexturedMeshes()) {
@@ -119,8 +122,15 @@ TEST_F(UvConfigureTest, AutoMeasuresCandidatesWithTheChosenSeamCoding) {
     if (mesh.value()->NumNamedAttributes(GeometryAttribute::TEX_COORD) != 1) {
       continue;  // Auto picks attribute by attribute.
     }
-    const size_t num_values =
-        mesh.value()->GetNamedAttribute(GeometryAttribute::TEX_COORD)->size();
+    const PointAttribute *const pos =
+        mesh.value()->GetNamedAttribute(GeometryAttribute::POSITION);
+    const PointAttribute *const uv =
+        mesh.value()->GetNamedAttribute(GeometryAttribute::TEX_COORD);
+    std::set<std::pair<uint32_t, uint32_t>> uv_vertices;
+    for (PointIndex p(0); p < mesh.value()->num_points(); ++p) {
+      uv_vertices.insert(
+          {pos->mapped_index(p).value(), uv->mapped_index(p).value()});
+    }
     for (const std::string seams : {"", "+context"}) {
       const auto size_of = [&](const std::string &prediction) {
         const auto bytes = EncodeMeshToBytes(
@@ -134,9 +144,10 @@ TEST_F(UvConfigureTest, AutoMeasuresCandidatesWithTheChosenSeamCoding) {
             "weighted"}) {
         fastest_smallest = std::min(fastest_smallest, size_of(candidate));
       }
-      // weighted_multi decodes slower: it must save half a bit per value.
+      // weighted_multi decodes slower: it must save half a bit per UV vertex.
       const size_t multi = size_of("weighted_multi");
-      const bool take_multi = multi + (num_values + 15) / 16 < fastest_smallest;
+      const bool take_multi =
+          multi + (uv_vertices.size() + 15) / 16 < fastest_smallest;
       EXPECT_EQ(size_of("auto"), take_multi ? multi : fastest_smallest)
           << path << seams;
       ++(take_multi ? multi_taken : multi_left);
