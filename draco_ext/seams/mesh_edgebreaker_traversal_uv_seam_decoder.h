@@ -44,7 +44,7 @@ struct UvSeamDracoCornerTable {
     return table.Opposite(CornerIndex(corner)).value();
   }
   uint32_t Vertex(uint32_t corner) const {
-    return table.ConfidentVertex(CornerIndex(corner)).value();
+    return table.Vertex(CornerIndex(corner)).value();
   }
 
   const CornerTable &table;
