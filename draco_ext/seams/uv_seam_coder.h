@@ -245,7 +245,9 @@ bool UvSeamContextCoder<TableT>::Init(const TableT &table, int num_attributes) {
   const uint32_t num_vertices = table.num_vertices;
   const uint32_t num_corners = table.num_corners() / 3 * 3;
   // A vertex of a manifold table has one interior edge per corner, one
-  // fewer on a boundary. (Other tables only get other contexts.)
+  // fewer on a boundary, where it ends two boundary edges: the one whose
+  // corner's Next() it is takes the edge off. (Other tables only get other
+  // contexts.)
   vertex_state_.assign(num_vertices, 0);
   uint32_t *const state = vertex_state_.data();
   for (uint32_t first = 0; first < num_corners; first += 3) {
@@ -258,7 +260,8 @@ bool UvSeamContextCoder<TableT>::Init(const TableT &table, int num_attributes) {
       state[v[i]] += kOneEdge;
       const uint32_t opposite = table.Opposite(first + i);
       if (opposite == TableT::kBoundary) {
-        state[v[i == 2 ? 0 : i + 1]] |= kOnBoundary;
+        uint32_t &next = state[v[i == 2 ? 0 : i + 1]];
+        next = (next - kOneEdge) | kOnBoundary;
         state[v[i == 0 ? 2 : i - 1]] |= kOnBoundary;
       } else if (opposite >= num_corners) {
         return false;
@@ -266,9 +269,6 @@ bool UvSeamContextCoder<TableT>::Init(const TableT &table, int num_attributes) {
         num_edges_ += opposite >= first;  // Not an edge of an earlier face.
       }
     }
-  }
-  for (uint32_t vertex = 0; vertex < num_vertices; ++vertex) {
-    state[vertex] -= (state[vertex] & kOnBoundary) * kOneEdge;
   }
   seams_at_.assign(static_cast<size_t>(num_vertices) * num_attributes, 0);
   seam_corners_.assign(static_cast<size_t>(num_corners) * num_attributes, 0);
