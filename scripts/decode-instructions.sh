@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
-# Decode cost of draco-uv's coders against stock Draco on the corpus, as
-# issue 26 measures it: instructions inside Decoder::DecodeMeshFromBuffer
-# (valgrind callgrind, one thread) with interleaved wall times beside them.
+# Decode cost of draco-uv's coders against stock Draco on the corpus, as the
+# decode-speed targets measure it: instructions inside
+# Decoder::DecodeMeshFromBuffer (valgrind callgrind, one thread) with
+# interleaved wall times beside them.
 #
 #   scripts/decode-instructions.sh [CORPUS_DIR] [BUILD_DIR] [ROUNDS] [PROFILES]
 #

@@ -9,13 +9,13 @@ Draco's file and of every scheme). MANIFEST.tsv gives each mesh's kind.
 Prints, as Markdown: instructions inside Decoder::DecodeMeshFromBuffer as a
 ratio to the stock file's per mesh (wall-time ratio beside it), the median
 per kind and overall and the worst mesh, the seam coder's instructions per
-interior edge, and the targets of issue 26 with whether they are met.
+interior edge, and the decode-speed targets with whether they are met.
 """
 import csv
 import statistics
 import sys
 
-# Instruction-ratio targets of issue 26: (median, every mesh or None).
+# The decode-speed targets, as instruction ratios: (median, every mesh or None).
 TARGETS = {
     'weighted': (1.05, None),
     'weighted_multi': (1.10, None),
@@ -110,7 +110,7 @@ def print_seams(schemes, rows):
 
 
 def print_targets(schemes, rows):
-    print('| target of issue 26 (instructions) | median | worst | met |')
+    print('| decode-speed target (instructions) | median | worst | met |')
     print('| --- | ---: | ---: | --- |')
     for context, stock in SEAM_PAIRS:
         if context in schemes and (stock is None or stock in schemes):
