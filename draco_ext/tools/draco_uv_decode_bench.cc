@@ -14,7 +14,8 @@
 //
 // draco_uv_decode_bench: how long decoding a whole mesh takes with
 // draco-uv's texture coordinate coders against stock Draco's, in time and,
-// with --instructions, in executed instructions (the decode-speed targets' measure).
+// with --instructions, in executed instructions (the measure of the
+// decode-speed targets).
 //
 // Each mesh is encoded in memory like draco_encoder, once without -uv_pred
 // (stock Draco's bitstream) and once per scheme ("<uv_pred>[+<uv_seams>]");
