@@ -20,14 +20,6 @@ namespace draco {
 
 namespace {
 
-// The bound between the sub-intervals of 0 and 1.
-uint32_t SplitRange(uint32_t range, uint32_t probability_of_one) {
-  DRACO_DCHECK(probability_of_one > 0 &&
-               probability_of_one < kUvSeamProbabilityOne);
-  return (range >> kUvSeamProbabilityBits) *
-         (kUvSeamProbabilityOne - probability_of_one);
-}
-
 // The value in [low, low + range) with the most trailing zero bits: the
 // shortest tail that identifies the final interval.
 uint64_t TailValue(uint64_t low, uint32_t range) {
@@ -45,7 +37,7 @@ uint64_t TailValue(uint64_t low, uint32_t range) {
 }  // namespace
 
 void UvSeamRangeEncoder::EncodeBit(bool bit, uint32_t probability_of_one) {
-  const uint32_t bound = SplitRange(range_, probability_of_one);
+  const uint32_t bound = UvSeamSplitRange(range_, probability_of_one);
   if (bit) {
     low_ += bound;
     range_ -= bound;

@@ -32,6 +32,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "draco/core/macros.h"
+
 namespace draco {
 
 // Probabilities are P(bit == 1) in units of 1/4096, within [1, 4095].
@@ -63,6 +65,14 @@ class UvSeamRangeEncoder {
   std::vector<uint8_t> bytes_;
 };
 
+// The part of |range| that codes a zero bit, for both coders.
+inline uint32_t UvSeamSplitRange(uint32_t range, uint32_t probability_of_one) {
+  DRACO_DCHECK(probability_of_one > 0 &&
+               probability_of_one < kUvSeamProbabilityOne);
+  return (range >> kUvSeamProbabilityBits) *
+         (kUvSeamProbabilityOne - probability_of_one);
+}
+
 class UvSeamRangeDecoder {
  public:
   // Starts decoding |size| bytes at |data|, which must outlive the decoder.
@@ -70,8 +80,7 @@ class UvSeamRangeDecoder {
 
   // Inline: the seam decoder calls it once per interior edge.
   bool DecodeBit(uint32_t probability_of_one) {
-    const uint32_t bound = (range_ >> kUvSeamProbabilityBits) *
-                           (kUvSeamProbabilityOne - probability_of_one);
+    const uint32_t bound = UvSeamSplitRange(range_, probability_of_one);
     const bool bit = code_ >= bound;
     if (bit) {
       code_ -= bound;
