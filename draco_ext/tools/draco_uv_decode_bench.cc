@@ -321,7 +321,8 @@ std::vector<double> CountAll(const std::vector<std::vector<char>> &files,
                              const std::string &folder) {
   std::vector<double> counts;
   for (size_t i = 0; i < files.size(); ++i) {
-    counts.push_back(CountInstructions(files[i], folder, mesh + "." + names[i]));
+    counts.push_back(
+        CountInstructions(files[i], folder, mesh + "." + names[i]));
     if (counts.back() <= 0) {
       fprintf(stderr, "Error: callgrind failed on %s %s (see %s)\n",
               mesh.c_str(), names[i].c_str(), folder.c_str());

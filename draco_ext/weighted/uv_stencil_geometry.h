@@ -331,7 +331,7 @@ inline int64_t UvAgreementWeight(const UvStencilUv &affine,
                           int64_t{1} << 24);
     divisor += d * d;
   }
-  // divisor = m * 2^k with m in [256, 512): 2^30 / divisor ~ 2^38 / m / 2^(k+8).
+  // divisor = m * 2^k, m in [256, 512): 2^30 / divisor ~ 2^38 / m / 2^(k+8).
   const int k = BitLength(static_cast<uint64_t>(divisor)) - 9;
   const int64_t m = divisor >> k;
   return table.value[m - 256] >> (k + 8);
@@ -340,8 +340,9 @@ inline int64_t UvAgreementWeight(const UvStencilUv &affine,
 // Clamps a Q16 prediction to the range documented above.
 inline UvStencilUv ClampPredictionQ16(UvStencilUv prediction) {
   for (int i = 0; i < 2; ++i) {
-    prediction[i] = std::max(kUvStencilMinPredictionQ16,
-                             std::min(kUvStencilMaxPredictionQ16, prediction[i]));
+    prediction[i] =
+        std::max(kUvStencilMinPredictionQ16,
+                 std::min(kUvStencilMaxPredictionQ16, prediction[i]));
   }
   return prediction;
 }

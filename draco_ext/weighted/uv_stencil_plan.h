@@ -122,9 +122,10 @@ class UvStencilPlanner {
       return;
     }
     const int32_t opposite = graph_.opposite[corner];
-    const int32_t b = opposite != UvCornerGraph::kNone && IsKnown(opposite, step)
-                          ? graph_.entry[opposite]
-                          : UvCornerGraph::kNone;
+    const int32_t b =
+        opposite != UvCornerGraph::kNone && IsKnown(opposite, step)
+            ? graph_.entry[opposite]
+            : UvCornerGraph::kNone;
     plan->stencils[plan->num_stencils++] = {l, r, b};
   }
 

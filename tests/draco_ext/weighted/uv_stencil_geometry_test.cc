@@ -35,7 +35,8 @@ struct AffineMap {
   int64_t m[2][2];
   Uv t;
   Uv Apply(int64_t a, int64_t b) const {
-    return Uv(m[0][0] * a + m[0][1] * b + t[0], m[1][0] * a + m[1][1] * b + t[1]);
+    return Uv(m[0][0] * a + m[0][1] * b + t[0],
+              m[1][0] * a + m[1][1] * b + t[1]);
   }
 };
 
@@ -89,7 +90,8 @@ TEST(UvStencilGeometryTest, AffinePredictionIsExactForAffineMapsOfAPlane) {
       continue;
     }
     ++tested;
-    const Uv predicted = RoundQ16(PredictAffineQ16(frame, uv[0], uv[1] - uv[0], uv[3] - uv[0]));
+    const Uv predicted =
+        RoundQ16(PredictAffineQ16(frame, uv[0], uv[1] - uv[0], uv[3] - uv[0]));
     // The map scales unit steps by up to 60, so Q16 rounding of the frame
     // coefficients may shift the result by one quantum.
     EXPECT_LE(MaxAbsError(predicted, uv[2]), 1) << "trial " << trial;

@@ -39,8 +39,9 @@ UvCornerGraph MakeGridGraph(int n) {
   const auto vertex = [n](int i, int j) { return j * (n + 1) + i; };
   for (int j = 0; j < n; ++j) {
     for (int i = 0; i < n; ++i) {
-      for (const int v : {vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1),
-                          vertex(i, j), vertex(i + 1, j + 1), vertex(i, j + 1)}) {
+      for (const int v :
+           {vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1), vertex(i, j),
+            vertex(i + 1, j + 1), vertex(i, j + 1)}) {
         graph.entry.push_back(v);
       }
     }
@@ -178,8 +179,10 @@ TEST(UvStencilPlanTest, CorruptConnectivityStaysWithinBounds) {
     const int num_corners = 3 * (1 + static_cast<int>(random() % 20));
     UvCornerGraph graph;
     for (int c = 0; c < num_corners; ++c) {
-      graph.entry.push_back(static_cast<int32_t>(random() % (num_entries + 1)) - 1);
-      graph.opposite.push_back(static_cast<int32_t>(random() % (num_corners + 1)) - 1);
+      graph.entry.push_back(static_cast<int32_t>(random() % (num_entries + 1)) -
+                            1);
+      graph.opposite.push_back(
+          static_cast<int32_t>(random() % (num_corners + 1)) - 1);
     }
     UvProcessingOrder order;
     order.Reset(num_entries);
