@@ -59,18 +59,19 @@ struct UvComputedFrame {
 // attribute, in a UvProcessingOrder, from the entries processed before and
 // from the quantised 3D positions of all vertices.
 //
-// Stencils: the faces whose tip (last processed vertex) is O, all of them or
-// (kReach*) the one through which Draco's traversal reaches O; the
-// other two UV vertices L and R are known. Each stencil gives
+// Stencils: faces whose tip (last processed vertex) is O and whose other two
+// UV vertices L and R are known: up to three (UvStencilPlanner: the face
+// through which the order reaches O and its two neighbours around O) or
+// (kReach*) the one through which Draco's traversal reaches O. Each stencil gives
 //   c  the weighted parallelogram of eq. (3)-(4) when B, the vertex across
 //      LR, is known (exact for locally affine parameterisations), else s;
 //   s  the similarity (conformal) rule; its side of LR comes from B, else
 //      from the opposite vertices of the last step that had any, so no
 //      orientation bit is sent;
 //   a  the parallelogram vL + vR - vB when B is known.
-// Candidates combine all stencils: mean of c and s, mean of c, mean of s,
-// mean of a, and the agreement-weighted mean of (c + s) / 2
-// (UvAgreementWeight()). kAdaptive picks, per vertex, the candidate with the
+// Candidates combine the stencils: mean of c and s, mean of c, mean of s,
+// and the agreement-weighted mean of (c + s) / 2 (UvAgreementWeight()); the
+// reach kinds use c, s, a and the mean of c and s instead. kAdaptive picks, per vertex, the candidate with the
 // smallest recent errors (a sum over all vertices so far that decays by
 // 15/16 per vertex; it beat the errors at the vertex's own neighbours on 6
 // of 7 test meshes, and costs no per-vertex memory); kReachAdaptive does the

@@ -33,18 +33,19 @@ constexpr uint8_t kTexCoordsWeightedFormatVersion = 2;
 
 // Which stencils a vertex uses and how their predictions become one.
 enum class UvPredictorKind : uint8_t {
-  // All stencils; per vertex the candidate combination whose predictions
-  // had the smallest recent errors (a sum over the vertices decoded so far
+  // Up to three stencils per vertex (UvStencilPlanner); per vertex the
+  // candidate combination whose predictions had the smallest recent errors (a sum over the vertices decoded so far
   // that decays by 15/16 per vertex).
   kAdaptive = 0,
-  // All stencils; the mean of the weighted parallelogram and the similarity
-  // prediction of every stencil, weighted by how much the two agree.
+  // Up to three stencils per vertex; the mean of the weighted parallelogram
+  // and the similarity prediction of every stencil, weighted by how much the
+  // two agree.
   kAgreementWeighted = 1,
   // Only the stencil of the face through which Draco's traversal reaches
   // the vertex, as Draco's own texture coordinate predictors do: about half
   // the arithmetic of the others, for stock decoding speed. Needs Draco's
-  // entry order. Per vertex, the candidate with the smallest recent errors,
-  // as kAdaptive.
+  // entry order. Per vertex, the candidate with the smallest recent errors
+  // among its weighted parallelogram, similarity and parallelogram.
   kReachAdaptive = 2,
   // The reach stencil; the mean of its weighted parallelogram and its
   // similarity prediction.
