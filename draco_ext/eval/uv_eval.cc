@@ -29,6 +29,7 @@
 #include "draco/core/quantization_utils.h"
 #include "draco/mesh/mesh_attribute_corner_table.h"
 #include "draco/mesh/mesh_misc_functions.h"
+#include "draco_ext/common/uv_vertices.h"
 #include "draco_ext/options/uv_encode_settings.h"
 #include "draco_ext/eval/uv_seam_stats.h"
 
@@ -228,16 +229,9 @@ std::vector<std::string> ListMeshFiles(const std::string &input) {
 }
 
 int64_t CountUvVertices(const Mesh &mesh) {
-  const PointAttribute *const position =
-      mesh.GetNamedAttribute(GeometryAttribute::POSITION);
   int64_t count = 0;
   for (const PointAttribute *att : TexCoordAttributes(mesh)) {
-    std::unordered_set<uint64_t> pairs;
-    for (PointIndex p(0); p < mesh.num_points(); ++p) {
-      pairs.insert((uint64_t{position->mapped_index(p).value()} << 32) |
-                   att->mapped_index(p).value());
-    }
-    count += static_cast<int64_t>(pairs.size());
+    count += NumUvVertices(mesh, *att);
   }
   return count;
 }

@@ -14,15 +14,13 @@
 //
 #include "draco_ext/options/uv_prediction_options.h"
 
-#include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <limits>
-#include <utility>
 #include <vector>
 
 #include "draco/core/encoder_buffer.h"
 #include "draco_ext/common/uv_prediction_ids.h"
+#include "draco_ext/common/uv_vertices.h"
 #include "draco_ext/options/uv_laplacian_options.h"
 #include "draco_ext/weighted/uv_stencil_geometry.h"
 
@@ -149,25 +147,9 @@ StatusOr<size_t> EncodedSize(ExpertEncoder *encoder) {
 // -uv_pred auto takes weighted_multi, which decodes in about 1.3x stock
 // Draco's instructions where its other candidates take 1.0-1.05x
 // (benchmarks/decode_speed.md), only where it saves at least half a bit per
-// UV vertex over the smallest of them: 6-17 % of the UV bytes on the corpus
+// UV vertex over the smallest of them: 4-17 % of the UV bytes on the corpus
 // meshes where it does.
 constexpr size_t kUvVerticesPerByteSlowDecodeMustSave = 16;
-
-// UV vertices of the TEX_COORD attribute |att_id|: distinct pairs of
-// position and texture coordinate values, the entries Draco codes (and the
-// decoder predicts) one by one.
-size_t NumUvVertices(const Mesh &mesh, int att_id) {
-  const PointAttribute *const uv = mesh.attribute(att_id);
-  const PointAttribute *const pos =
-      mesh.GetNamedAttribute(GeometryAttribute::POSITION);
-  std::vector<std::pair<uint32_t, uint32_t>> pairs(mesh.num_points());
-  for (PointIndex p(0); p < mesh.num_points(); ++p) {
-    pairs[p.value()] = {pos == nullptr ? 0 : pos->mapped_index(p).value(),
-                        uv->mapped_index(p).value()};
-  }
-  std::sort(pairs.begin(), pairs.end());
-  return std::unique(pairs.begin(), pairs.end()) - pairs.begin();
-}
 
 bool IsSlowToDecode(PredictionSchemeMethod method) {
   return method == MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI;
@@ -192,7 +174,7 @@ std::vector<PredictionSchemeMethod> AutoCandidates() {
 // |encoder| and returns its summary line.
 StatusOr<std::string> ChooseSmallestFor(const Mesh &mesh, int att_id,
                                         ExpertEncoder *encoder) {
-  const size_t slow_handicap = (NumUvVertices(mesh, att_id) +
+  const size_t slow_handicap = (NumUvVertices(mesh, *mesh.attribute(att_id)) +
                                 kUvVerticesPerByteSlowDecodeMustSave - 1) /
                                kUvVerticesPerByteSlowDecodeMustSave;
   PredictionSchemeMethod best_method = PREDICTION_UNDEFINED;
