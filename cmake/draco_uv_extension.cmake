@@ -81,8 +81,6 @@ if(DRACO_UV_LAPLACIAN)
            "${draco_uv_ext}/laplacian/uv_laplacian_operator.h"
            "${draco_uv_ext}/laplacian/uv_laplacian_system.cc"
            "${draco_uv_ext}/laplacian/uv_laplacian_system.h"
-           "${draco_uv_ext}/linalg/elimination_tree.cc"
-           "${draco_uv_ext}/linalg/elimination_tree.h"
            "${draco_uv_ext}/linalg/sparse_cholesky.cc"
            "${draco_uv_ext}/linalg/sparse_cholesky.h"
            "${draco_uv_ext}/linalg/dense_front.cc"

@@ -60,8 +60,8 @@ namespace draco {
 // Caps the factor of the least-squares system of |num_vertices| texture
 // vertices (entries, 8 bytes each): linear in the mesh, at most 2^28, so
 // that hostile connectivity fails instead of exhausting memory. Mesh
-// Laplacians under the solver's fill-reducing order need far less (at most
-// 190 entries per vertex on the corpus and benchmark meshes).
+// Laplacians under nested dissection need far less (O(n log n) with a small
+// constant).
 int64_t UvLaplacianMaxFactorEntries(int num_vertices);
 
 // Encodes |uv| (one row per texture vertex of |mesh|, in frame units).

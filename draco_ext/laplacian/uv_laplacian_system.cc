@@ -122,10 +122,10 @@ void AddToDiagonalEntry(SymmetricMatrix *m, int u, double delta) {
   m->value[m->column_start[u]] += delta;
 }
 
-// The factorisation's work is capped at kFlopsScale n^1.5 + kMinFlops: 5.5
+// The factorisation's work is capped at kFlopsScale n^1.5 + kMinFlops: 4-9
 // times what the corpus meshes and the 300k-vertex benchmark meshes need
-// under the solver's order (at most 184 n^1.5, measured), so that hostile
-// connectivity (dense fronts) fails instead of decoding for hours.
+// under nested dissection (at most 255 n^1.5, measured), so that hostile
+// connectivity (huge separators) fails instead of decoding for hours.
 double MaxFactorFlops(int num_unknowns) {
   constexpr double kFlopsScale = 1024;
   constexpr double kMinFlops = 1e8;

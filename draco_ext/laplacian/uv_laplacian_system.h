@@ -47,9 +47,8 @@ class UvLaplacianSystem {
   // (UvTextureGraph()), while |build_operator| runs, on a second thread
   // when allowed: it returns the operator (kept by the caller until the
   // last Solve()), or null when it cannot be built; then L^T L is built on
-  // that thread too. The ordering needs no weights, so the two run side by
-  // side (on the 300k-vertex benchmark mesh the ordering takes about 1.5
-  // times as long as the operator and L^T L) instead of one after the
+  // that thread too. The ordering needs no weights, so the two take about
+  // equally long (300k-vertex benchmark mesh) instead of one after the
   // other. False when building failed, or the factor would exceed
   // |max_factor_entries| or its factorisation would take more than about
   // 1024 n^1.5 flops (n unknowns; see uv_laplacian_system.cc).

@@ -15,20 +15,29 @@
 // Sparse Cholesky factorisation M = L L^T of the symmetric positive definite
 // matrices of the Laplacian texture coordinate coder (normal equations of
 // mesh Laplacians), after
+//   [George & Liu 1978] A. George, J. W. H. Liu: An automatic nested
+//     dissection algorithm for irregular finite element problems. SIAM J.
+//     Numer. Anal. 15(5).
 //   [Duff & Reid 1983] I. S. Duff, J. K. Reid: The multifrontal solution of
 //     indefinite sparse symmetric linear equations. ACM TOMS 9(3).
 //   [Gill et al. 1974] P. E. Gill, G. H. Golub, W. Murray, M. A. Saunders:
 //     Methods for modifying matrix factorizations. Math. Comp. 28(126).
 //
-// The fill-reducing order is a column approximate minimum degree order
-// (COLAMD) of the matrix's square root A (the mesh one-ring pattern, for
-// the normal matrix A^T A), and the assembly tree is the relaxed
-// supernodal elimination tree of that order (elimination_tree.h): every
-// tree node is one dense front, whose columns are factorised in place in
-// the factor's storage with Eigen's blocked dense kernels. Eigen's own
-// sparse Cholesky (simplicial, AMD order) measured 3-4 times slower on the
-// 300k-vertex benchmark mesh, mostly in the ordering and in its
-// column-by-column numeric phase.
+// The fill-reducing order is a nested dissection [George & Liu 1978] of
+// the matrix's square root graph (the mesh one-ring graph, where the normal
+// matrix couples the unknowns at most two edges apart): coupled components
+// are dissected separately, and a coupled subset is cut at the smaller of
+// two balanced separators two edges wide, the smallest pair of levels near
+// the median of a breadth-first level structure from a pseudo-peripheral
+// vertex a, or a band of level sets of d_a - d_b across the subset (b the
+// farthest vertex from a), and the separator is thinned. Searching the
+// one-ring graph visits a third of the edges of the normal matrix's own
+// graph, for the same separators. The dissection tree is the assembly tree
+// of a multifrontal factorisation: every tree node is one dense front,
+// whose columns are factorised in place in the factor's storage with
+// Eigen's blocked dense kernels. Eigen's own sparse Cholesky (simplicial,
+// AMD order) measured 3-4 times slower on the 300k-vertex benchmark mesh,
+// mostly in the ordering and in its column-by-column numeric phase.
 //
 // Deterministic: the same pattern, coordinates and values give the same
 // factor and solutions on one build and, with the portable dense kernels
@@ -65,7 +74,7 @@ struct SymmetricMatrix {
 // that pattern, then Solve() and AddToDiagonal() any number of times.
 // Results are deterministic (file comment). Weak where: no pivoting, so an
 // indefinite or nearly singular M fails Factorize() or solves inaccurately;
-// the order is a heuristic tuned for sparse patterns, and dense or
+// the order is tuned for mesh-like graphs of low degree, and dense or
 // expander-like graphs give large fronts (bounded only by Analyze()'s
 // |max_entries|); one object must not be used from two threads at once.
 class SparseCholesky {
@@ -75,8 +84,8 @@ class SparseCholesky {
   // v are at most two edges apart in |graph| (symmetric): the pattern of
   // the normal matrix A^T A when |graph| is the pattern of a square A, as
   // for a mesh Laplacian and its one-ring graph. False, before allocating
-  // the factor, when it would have more than |max_entries| entries. Runs
-  // on one thread.
+  // the factor, when it would have more than |max_entries| entries. Large
+  // graphs are dissected on two threads, to the same order as on one.
   bool Analyze(const MatrixGraph &graph, int64_t max_entries);
   // Analyze(), running |work| meanwhile on a second thread when allowed
   // (else first), e.g. to build the matrix during the ordering.
@@ -85,7 +94,7 @@ class SparseCholesky {
 
   // Factorises |matrix| (pattern as analysed). False when the matrix is not
   // numerically positive definite or has non-finite entries. Large
-  // factorisations share the subtrees and nodes of the assembly tree
+  // factorisations share the subtrees and nodes of the dissection tree
   // between two threads as they become ready; every front's arithmetic is
   // the same as on one thread, so the factor is bit-identical whatever the
   // thread count and timing.
@@ -120,7 +129,7 @@ class SparseCholesky {
   }
 
  private:
-  // One node of the assembly tree: a dense front whose first |num_columns|
+  // One node of the dissection tree: a dense front whose first |num_columns|
   // rows are its own consecutive columns and whose other rows are the
   // columns |update_rows| of ancestor nodes it updates.
   struct Node {
@@ -142,6 +151,8 @@ class SparseCholesky {
     int last_node;
     int parent;
   };
+
+  class Dissection;
 
   static double NodeFlops(const Node &node) {
     const double k = node.num_columns, r = node.update_rows.size();
