@@ -14,6 +14,7 @@
 //
 #include "draco_ext/linalg/sparse_cholesky.h"
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -149,6 +150,52 @@ TEST(SparseCholeskyTest, SolvesALargeGridSystem) {
   Eigen::MatrixXd b = Multiply(s.matrix, x);
   cholesky.Solve(b);
   EXPECT_LT((b - x).cwiseAbs().maxCoeff(), 1e-9);
+}
+
+// A random graph of degree about 6 (an expander, unlike a mesh): its
+// factor is nearly dense, as a hostile file's would be.
+MatrixGraph MakeRandomGraph(int n) {
+  std::vector<std::vector<int>> adjacency(n);
+  uint32_t state = 12345;
+  for (int i = 0; i < 3 * n; ++i) {
+    state = state * 1664525u + 1013904223u;
+    const int u = static_cast<int>(state % n);
+    state = state * 1664525u + 1013904223u;
+    const int v = static_cast<int>(state % n);
+    if (u != v) {
+      adjacency[u].push_back(v);
+      adjacency[v].push_back(u);
+    }
+  }
+  MatrixGraph graph;
+  graph.start.push_back(0);
+  for (std::vector<int> &neighbours : adjacency) {
+    std::sort(neighbours.begin(), neighbours.end());
+    neighbours.erase(std::unique(neighbours.begin(), neighbours.end()),
+                     neighbours.end());
+    graph.neighbour.insert(graph.neighbour.end(), neighbours.begin(),
+                           neighbours.end());
+    graph.start.push_back(static_cast<int>(graph.neighbour.size()));
+  }
+  return graph;
+}
+
+TEST(SparseCholeskyTest, RejectsFactorsAboveTheCap) {
+  for (const int side : {10, 60}) {
+    const GridSystem s = MakeGridNormalSystem(side);
+    SparseCholesky cholesky;
+    ASSERT_TRUE(cholesky.Analyze(s.graph, int64_t{1} << 26));
+    const int64_t entries = cholesky.factor_size();
+    EXPECT_TRUE(cholesky.Analyze(s.graph, entries));
+    EXPECT_FALSE(cholesky.Analyze(s.graph, entries - 1));
+  }
+  // A cap linear in the unknowns, as the Laplacian decoder's, holds mesh
+  // factors (above) but not an expander's.
+  const int n = 20000;
+  SparseCholesky cholesky;
+  EXPECT_FALSE(cholesky.Analyze(MakeRandomGraph(n), 256 * int64_t{n}));
+  ASSERT_TRUE(cholesky.Analyze(MakeGridNormalSystem(141).graph,
+                               256 * int64_t{141 * 141}));
 }
 
 TEST(SparseCholeskyTest, TwoThreadsGiveTheSameFactorAsOne) {
