@@ -25,6 +25,7 @@
 
 #include "draco/core/status_or.h"
 #include "draco/mesh/mesh.h"
+#include "draco_ext/common/uv_rmse.h"  // IWYU pragma: export
 #include "draco_ext/options/uv_compression_options.h"
 
 namespace draco {
@@ -88,10 +89,6 @@ std::vector<std::string> ListMeshFiles(const std::string &input);
 // Bytes stock Draco's Edgebreaker spends on the seams of the TEX_COORD
 // attributes: one static-probability rANS bit per interior edge each.
 double StockSeamBytes(const Mesh &mesh);
-
-// RMSE (eq. 9) of |decoded|'s texture coordinates against |original|'s,
-// matching faces by their positions quantized with |qp| bits.
-StatusOr<double> UvRmse(const Mesh &original, const Mesh &decoded, int qp);
 
 // Measures every scheme of |options| at every qt on |mesh|.
 StatusOr<std::vector<UvEvalRow>> EvaluateMesh(const std::string &name,

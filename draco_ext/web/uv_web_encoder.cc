@@ -45,9 +45,10 @@ bool WroteDracoUvIds(const Mesh &mesh, const ExpertEncoder &encoder,
          UsesDracoUvScheme(mesh, encoder);
 }
 
-// True when every attribute's options leave the choice to -uv_pred auto (or
-// keep Draco's own prediction) and one asks for auto: the case in which the
-// glTF encoder may fall back to stock coding.
+// True when every attribute's options leave the choice to the encoder
+// (-uv_pred auto, or an error target without -uv_pred) or keep Draco's own
+// prediction, and one leaves it to the encoder: the case in which the glTF
+// encoder may fall back to stock coding.
 bool OnlyAutoChooses(const std::map<int, UvCompressionOptions> &options) {
   bool any_auto = false;
   for (const auto &entry : options) {
@@ -56,7 +57,7 @@ bool OnlyAutoChooses(const std::map<int, UvCompressionOptions> &options) {
         prediction != UvPrediction::kDraco) {
       return false;
     }
-    any_auto = any_auto || prediction == UvPrediction::kAuto;
+    any_auto = any_auto || entry.second.ChoosesPrediction();
   }
   return any_auto;
 }
