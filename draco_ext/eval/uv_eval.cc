@@ -27,8 +27,9 @@
 #include "draco/mesh/mesh_attribute_corner_table.h"
 #include "draco/mesh/mesh_misc_functions.h"
 #include "draco_ext/common/uv_vertices.h"
-#include "draco_ext/options/uv_encode_settings.h"
 #include "draco_ext/eval/uv_seam_stats.h"
+#include "draco_ext/options/uv_encode_settings.h"
+#include "draco_ext/options/uv_error_target.h"
 
 namespace draco {
 
@@ -186,7 +187,7 @@ struct UvEvalBaseline {
   // At the evaluated -cl, per -uv_seams name (the seams of other
   // non-position attributes, e.g. normals, depend on it).
   std::map<UvSeamCoding, int64_t> size_without_uvs;
-  int64_t stock_best_uv_bytes = 0;  // Best of -cl 7 and -cl 10.
+  int64_t stock_best_uv_bytes = 0;   // Best of -cl 7 and -cl 10.
   std::vector<float> reference_uvs;  // Stock Draco's decoded UVs.
 };
 
@@ -214,8 +215,7 @@ StatusOr<int64_t> StockUvBytes(const Mesh &mesh, const Mesh &without,
 }
 
 StatusOr<UvEvalBaseline> MeasureBaseline(const Mesh &mesh, const Mesh &without,
-                                         const UvEvalOptions &options,
-                                         int qt) {
+                                         const UvEvalOptions &options, int qt) {
   UvEvalBaseline baseline;
   UvEncodeSettings settings{options.qp, 0, options.cl};
   for (const std::string &scheme : MeasuredSchemes(options)) {
@@ -234,7 +234,8 @@ StatusOr<UvEvalBaseline> MeasureBaseline(const Mesh &mesh, const Mesh &without,
     settings.cl = cl;
     DRACO_ASSIGN_OR_RETURN(const int64_t bytes,
                            StockUvBytes(mesh, without, settings));
-    baseline.stock_best_uv_bytes = std::min(baseline.stock_best_uv_bytes, bytes);
+    baseline.stock_best_uv_bytes =
+        std::min(baseline.stock_best_uv_bytes, bytes);
   }
   settings.cl = options.cl;
   TimedEncoding stock;
@@ -255,6 +256,44 @@ StatusOr<double> SeamBytes(const Mesh &mesh, const UvEncodeSettings &settings) {
   return static_cast<double>(ContextSeamStreamBytes(problem));
 }
 
+// Encodes |mesh| with |settings| and fills |row|'s sizes, times and error.
+Status MeasureSettings(const Mesh &mesh, const UvEvalOptions &options,
+                       const UvEncodeSettings &settings,
+                       const UvEvalBaseline &baseline, UvEvalRow *row) {
+  row->uv_vertices = CountUvVertices(mesh);
+  const int64_t size_without_uvs =
+      baseline.size_without_uvs.at(settings.uv.seams);
+  TimedEncoding encoding;
+  DRACO_RETURN_IF_ERROR(EncodeTimed(mesh, settings, options.repeat, &encoding));
+  row->enc_ms = encoding.ms;
+  DRACO_ASSIGN_OR_RETURN(
+      const auto decoded,
+      DecodeTimed(encoding.buffer, options.repeat, &row->dec_ms));
+  row->uv_bytes =
+      static_cast<int64_t>(encoding.buffer.size()) - size_without_uvs;
+  DRACO_ASSIGN_OR_RETURN(row->seam_bytes, SeamBytes(mesh, settings));
+  row->bpv =
+      row->uv_vertices > 0 ? 8.0 * row->uv_bytes / row->uv_vertices : 0.0;
+  row->ratio_vs_draco =
+      static_cast<double>(row->uv_bytes) / baseline.stock_best_uv_bytes;
+  if (row->target_rmse > 0) {  // Lossless choices decode to stock's UVs.
+    row->lossy = encoding.summary.find("-> laplacian") != std::string::npos;
+  }
+  row->round_trip_ok =
+      row->lossy || CornerUvs(*decoded) == baseline.reference_uvs;
+  DRACO_ASSIGN_OR_RETURN(row->rmse, UvRmse(mesh, *decoded, options.qp));
+  if (row->target_rmse > 0) {  // Each UV set meets the target.
+    for (int i = 0; i < mesh.NumNamedAttributes(GeometryAttribute::TEX_COORD);
+         ++i) {
+      DRACO_ASSIGN_OR_RETURN(const double rmse,
+                             UvRmseOf(mesh, *decoded, options.qp, i));
+      row->round_trip_ok = row->round_trip_ok && rmse <= row->target_rmse;
+    }
+  }
+  row->detail = encoding.summary;
+  return OkStatus();
+}
+
 StatusOr<UvEvalRow> MeasureScheme(const std::string &name, const Mesh &mesh,
                                   const UvEvalOptions &options, int qt,
                                   const std::string &scheme,
@@ -263,32 +302,63 @@ StatusOr<UvEvalRow> MeasureScheme(const std::string &name, const Mesh &mesh,
   row.mesh = name;
   row.scheme = scheme;
   row.qt = qt;
-  row.uv_vertices = CountUvVertices(mesh);
   UvEncodeSettings settings{options.qp, qt, options.cl};
   DRACO_ASSIGN_OR_RETURN(settings.uv, ParseUvSchemeName(scheme));
   row.lossy = IsUvLaplacian(settings.uv.prediction);
   if (row.lossy) {
     settings.uv.anchors = options.uv_anchors;
   }
-  const int64_t size_without_uvs =
-      baseline.size_without_uvs.at(settings.uv.seams);
-  TimedEncoding encoding;
   DRACO_RETURN_IF_ERROR(
-      EncodeTimed(mesh, settings, options.repeat, &encoding));
-  row.enc_ms = encoding.ms;
-  DRACO_ASSIGN_OR_RETURN(const auto decoded,
-                         DecodeTimed(encoding.buffer, options.repeat, &row.dec_ms));
-  row.uv_bytes =
-      static_cast<int64_t>(encoding.buffer.size()) - size_without_uvs;
-  DRACO_ASSIGN_OR_RETURN(row.seam_bytes, SeamBytes(mesh, settings));
-  row.bpv = row.uv_vertices > 0 ? 8.0 * row.uv_bytes / row.uv_vertices : 0.0;
-  row.ratio_vs_draco =
-      static_cast<double>(row.uv_bytes) / baseline.stock_best_uv_bytes;
-  row.round_trip_ok =
-      row.lossy || CornerUvs(*decoded) == baseline.reference_uvs;
-  DRACO_ASSIGN_OR_RETURN(row.rmse, UvRmse(mesh, *decoded, options.qp));
-  row.detail = encoding.summary;
+      MeasureSettings(mesh, options, settings, baseline, &row));
   return row;
+}
+
+// The coarsest -qt whose quantisation grid meets |max_rmse| in every UV
+// set: where the lossless codings that meet it are smallest.
+StatusOr<int> LosslessQtFor(const Mesh &mesh, double max_rmse) {
+  int qt = 1;
+  for (int i = 0; i < mesh.NumNamedAttributes(GeometryAttribute::TEX_COORD);
+       ++i) {
+    DRACO_ASSIGN_OR_RETURN(
+        const int bits,
+        SmallestQuantizationBitsFor(
+            mesh, *mesh.GetNamedAttribute(GeometryAttribute::TEX_COORD, i),
+            max_rmse, 30));
+    if (bits < 0) {
+      return ErrorStatus("No quantization meets RMSE " +
+                         std::to_string(max_rmse) + ".");
+    }
+    qt = std::max(qt, bits);
+  }
+  return qt;
+}
+
+// The rows of error target |max_rmse|, one per -uv_seams name.
+Status MeasureErrorTarget(const std::string &name, const Mesh &mesh,
+                          const Mesh &without, const UvEvalOptions &options,
+                          double max_rmse, std::vector<UvEvalRow> *rows) {
+  DRACO_ASSIGN_OR_RETURN(const int lossless_qt, LosslessQtFor(mesh, max_rmse));
+  DRACO_ASSIGN_OR_RETURN(const UvEvalBaseline baseline,
+                         MeasureBaseline(mesh, without, options, lossless_qt));
+  for (const std::string &seams : options.seams) {
+    const std::string suffix = seams == "draco" ? "" : "+" + seams;
+    UvEvalRow row;
+    row.mesh = name;
+    row.scheme = "rmse" + suffix;
+    row.target_rmse = max_rmse;
+    row.lossless_qt = lossless_qt;
+    DRACO_ASSIGN_OR_RETURN(const UvEvalRow lossless,
+                           MeasureScheme(name, mesh, options, lossless_qt,
+                                         "auto" + suffix, baseline));
+    row.lossless_uv_bytes = lossless.uv_bytes;
+    UvEncodeSettings settings{options.qp, lossless_qt, options.cl};
+    DRACO_ASSIGN_OR_RETURN(settings.uv, ParseUvSchemeName("draco" + suffix));
+    settings.uv.rmse = max_rmse;
+    DRACO_RETURN_IF_ERROR(
+        MeasureSettings(mesh, options, settings, baseline, &row));
+    rows->push_back(std::move(row));
+  }
+  return OkStatus();
 }
 
 }  // namespace
@@ -324,6 +394,10 @@ StatusOr<std::vector<UvEvalRow>> EvaluateMesh(const std::string &name,
           MeasureScheme(name, mesh, options, qt, scheme, baseline));
       rows.push_back(std::move(row));
     }
+  }
+  for (const double max_rmse : options.rmse_targets) {
+    DRACO_RETURN_IF_ERROR(
+        MeasureErrorTarget(name, mesh, *without, options, max_rmse, &rows));
   }
   return rows;
 }

@@ -46,6 +46,10 @@ struct UvEvalOptions {
   std::vector<std::string> seams = {"draco"};
   // -uv_anchors of the Laplacian schemes; unset means the default.
   std::optional<UvAnchorSpec> uv_anchors;
+  // Error targets (-uv_rmse R, UV units): per target and -uv_seams name a
+  // row of scheme "rmse" (with seams: "rmse+<coding>") with exactly what
+  // draco_encoder -uv_rmse R writes, qt 0.
+  std::vector<double> rmse_targets;
 };
 
 // The options a measured scheme name stands for: "<uv_pred>[+<uv_seams>]",
@@ -75,6 +79,13 @@ struct UvEvalRow {
   // for lossy ones (their error is |rmse|).
   bool round_trip_ok = false;
   std::string detail;          // E.g. what "auto" chose.
+  // Rows of an error target: the target (else 0), the UV bytes of the
+  // lossless coding that meets it (-uv_pred auto at the coarsest -qt whose
+  // grid meets it) and that -qt. ratio_vs_draco compares with stock
+  // Draco's best at that -qt; round_trip_ok says the target was met.
+  double target_rmse = 0;
+  int64_t lossless_uv_bytes = 0;
+  int lossless_qt = 0;
 };
 
 // Distinct (position, texture coordinate) pairs over all TEX_COORD
