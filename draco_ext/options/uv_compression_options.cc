@@ -262,9 +262,11 @@ Status CheckUvCompressionOptions(const UvCompressionOptions &options) {
     }
   }
   if (options.texture_size.has_value() &&
-      (!options.texels.has_value() || *options.texture_size < 1)) {
+      (!options.texels.has_value() || *options.texture_size < 1 ||
+       *options.texture_size > kMaxTextureSize)) {
     return ErrorStatus(std::string(kTextureSizeFlag) +
-                       " needs -uv_texels and a positive size.");
+                       " needs -uv_texels and 1 to " +
+                       std::to_string(kMaxTextureSize) + " texels.");
   }
   if (IsUvLaplacian(options.prediction) && !HasUvLaplacianCoder()) {
     return ErrorStatus(std::string("-uv_pred ") +

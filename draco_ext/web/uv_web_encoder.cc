@@ -14,6 +14,8 @@
 //
 #include "draco_ext/web/uv_web_encoder.h"
 
+#include <algorithm>
+#include <limits>
 #include <memory>
 
 #include "draco/compression/config/compression_shared.h"
@@ -106,6 +108,32 @@ bool DracoUvOptions::SetAnchors(const char *spec) {
     options_.anchors = anchors.value();
   }
   return Result(anchors.status());
+}
+
+bool DracoUvOptions::SetRmse(double rmse) {
+  UvCompressionOptions target;
+  target.rmse = rmse;
+  const Status status = CheckUvCompressionOptions(target);
+  if (status.ok()) {
+    options_.rmse = rmse;
+    options_.texels.reset();
+    options_.texture_size.reset();
+  }
+  return Result(status);
+}
+
+bool DracoUvOptions::SetTexels(double texels, long texture_size) {
+  UvCompressionOptions target;
+  target.texels = texels;
+  target.texture_size = static_cast<int>(
+      std::clamp<long>(texture_size, 0, std::numeric_limits<int>::max()));
+  const Status status = CheckUvCompressionOptions(target);
+  if (status.ok()) {
+    options_.rmse.reset();
+    options_.texels = target.texels;
+    options_.texture_size = target.texture_size;
+  }
+  return Result(status);
 }
 
 UvWebModuleState &UvWebModuleState::Instance() {
