@@ -235,14 +235,16 @@ std::string AnchorText(const UvAnchorSpec &spec) {
                           : std::to_string(spec.count));
 }
 
+// "<-uv_pred name> -qt <bits>[ -uv_anchors <spec>], <bytes> bytes".
 std::string Describe(const Coding &coding,
                      const std::optional<UvAnchorSpec> &anchors) {
-  std::string text =
-      UvPredictionNameOf(coding.method) + " -qt " + std::to_string(coding.qt);
-  if (IsUvLaplacian(coding.prediction)) {
-    text = std::string(UvPredictionNameOf(coding.prediction)) + " -qt " +
-           std::to_string(coding.qt) + " -uv_anchors " +
-           (anchors.has_value() ? AnchorText(*anchors) : "default");
+  const bool laplacian = IsUvLaplacian(coding.prediction);
+  std::string text = (laplacian ? UvPredictionNameOf(coding.prediction)
+                                : UvPredictionNameOf(coding.method)) +
+                     std::string(" -qt ") + std::to_string(coding.qt);
+  if (laplacian) {
+    text += " -uv_anchors " +
+            (anchors.has_value() ? AnchorText(*anchors) : "default");
   }
   return text + ", " + std::to_string(coding.bytes) + " bytes";
 }
