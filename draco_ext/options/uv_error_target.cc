@@ -17,6 +17,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <initializer_list>
 #include <limits>
 #include <map>
 #include <optional>
@@ -78,9 +79,8 @@ class ErrorTargetSearch {
   // The smallest lossless coding that meets the target, if any.
   StatusOr<std::optional<Coding>> Lossless();
   // The smallest Laplacian coding that meets the target, if any; gives up
-  // early when it cannot be smaller than |bytes_to_beat|. Starts at
-  // |first_qt|.
-  StatusOr<std::optional<Coding>> Laplacian(size_t bytes_to_beat, int first_qt);
+  // early when it cannot be smaller than |bytes_to_beat|.
+  StatusOr<std::optional<Coding>> Laplacian(size_t bytes_to_beat);
   // Sets |coding| on the encoder.
   Status Apply(const Coding &coding);
   int num_encodes() const { return num_encodes_; }
@@ -186,13 +186,18 @@ StatusOr<Coding> ErrorTargetSearch::LaplacianAt(UvPrediction prediction,
 }
 
 StatusOr<std::optional<Coding>> ErrorTargetSearch::Laplacian(
-    size_t bytes_to_beat, int first_qt) {
+    size_t bytes_to_beat) {
   const UvPrediction prediction = options_.ChoosesPrediction()
                                       ? UvPrediction::kLaplacianMeanValue
                                       : options_.prediction;
+  // Its error at a -qt is near the grid's: start at the grid's -qt.
+  DRACO_ASSIGN_OR_RETURN(
+      const int grid_qt,
+      SmallestQuantizationBitsFor(mesh_, *mesh_.attribute(att_id_), max_rmse_,
+                                  kUvLaplacianMaxStepBits));
+  int qt = grid_qt > 0 ? grid_qt : kUvLaplacianMaxStepBits;
   std::map<int, Coding> tried;
   const auto meets = [&](int qt) { return tried.at(qt).rmse <= max_rmse_; };
-  int qt = std::clamp(first_qt, 1, kUvLaplacianMaxStepBits);
   while (true) {
     if (tried.count(qt) == 0) {
       DRACO_ASSIGN_OR_RETURN(tried[qt], LaplacianAt(prediction, qt));
@@ -258,6 +263,23 @@ std::string TargetLabel(const UvCompressionOptions &options) {
              ")";
   }
   return label;
+}
+
+// The summary line of |chosen| for the attribute |label|, naming the other
+// |candidates| that met the target.
+std::string Summary(const UvCompressionOptions &options,
+                    const std::string &label, const Coding &chosen,
+                    std::initializer_list<std::optional<Coding>> candidates,
+                    int num_encodes) {
+  std::string summary = "UV error target " + TargetLabel(options) + ": " +
+                        label + " -> " + Describe(chosen, options.anchors) +
+                        " in all, RMSE " + Format("%.3g", chosen.rmse) + " (";
+  for (const std::optional<Coding> &other : candidates) {
+    if (other && (other->method != chosen.method || other->qt != chosen.qt)) {
+      summary += "also met: " + Describe(*other, options.anchors) + "; ";
+    }
+  }
+  return summary + std::to_string(num_encodes) + " trial encodes)\n";
 }
 
 }  // namespace
@@ -329,8 +351,7 @@ StatusOr<std::string> ConfigureUvErrorTarget(
   if (IsUvLaplacian(options.prediction) ||
       (options.ChoosesPrediction() && HasUvLaplacianCoder())) {
     const auto result = search.Laplacian(
-        lossless ? lossless->bytes : std::numeric_limits<size_t>::max(),
-        lossless ? lossless->qt : kUvLaplacianMaxStepBits);
+        lossless ? lossless->bytes : std::numeric_limits<size_t>::max());
     if (IsUvLaplacian(options.prediction) || result.ok()) {
       DRACO_ASSIGN_OR_RETURN(laplacian, result);
     }
@@ -344,15 +365,8 @@ StatusOr<std::string> ConfigureUvErrorTarget(
                        TargetLabel(options) + ".");
   }
   DRACO_RETURN_IF_ERROR(search.Apply(*best));
-  std::string summary = "UV error target " + TargetLabel(options) + ": " +
-                        label + " -> " + Describe(*best, options.anchors) +
-                        " in all, RMSE " + Format("%.3g", best->rmse) + " (";
-  for (const auto *other : {&lossless, &laplacian}) {
-    if (*other && &**other != &*best) {
-      summary += "also met: " + Describe(**other, options.anchors) + "; ";
-    }
-  }
-  return summary + std::to_string(search.num_encodes()) + " trial encodes)\n";
+  return Summary(options, label, *best, {lossless, laplacian},
+                 search.num_encodes());
 }
 
 }  // namespace draco
