@@ -6,7 +6,8 @@
 # CORPUS_DIR defaults to ../shared/corpus (MANIFEST.tsv and meshes/*.obj),
 # BUILD_DIR to build (after ./draco-uv.sh test or demo). Runs draco_uv_eval
 # at -qp 14 -cl 10 and qt 8, 10, 12 with every UV coder, times with the
-# minimum of 5 runs, and at two error targets (-uv_rmse), and renders the tables with scripts/render_benchmarks.py.
+# minimum of 5 runs, and at two error targets (-uv_rmse), and renders the
+# tables with scripts/render_benchmarks.py.
 # Timings need an otherwise idle machine. Takes about 10 minutes.
 set -euo pipefail
 cd "$(dirname "$0")/.."

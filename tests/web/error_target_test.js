@@ -133,7 +133,8 @@ function decodedRmse(decoderModule, grid, bytes) {
     if (!status.ok()) throw new Error(status.error_msg());
     for (const [name, type] of [['pos', decoderModule.POSITION],
                                 ['uv', decoderModule.TEX_COORD]]) {
-      const att = decoder.GetAttribute(mesh, decoder.GetAttributeId(mesh, type));
+      const att =
+          decoder.GetAttribute(mesh, decoder.GetAttributeId(mesh, type));
       const array = new decoderModule.DracoFloat32Array();
       decoder.GetAttributeFloatForAllPoints(mesh, att, array);
       values[name] = Float32Array.from({length: array.size()},

@@ -100,7 +100,8 @@ const createStockEncoderModule =
 
 /**
  * draco3d's createEncoderModule. With options.texCoordCompression
- * ({prediction, seams, anchors, rmse, texels, textureSize}), the module's default coding of texture
+ * ({prediction, seams, anchors, rmse, texels, textureSize}), the module's
+ * default coding of texture
  * coordinates is set before the promise resolves; the promise is rejected
  * with an Error naming the valid values when a value is unknown.
  */
