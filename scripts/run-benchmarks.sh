@@ -8,7 +8,7 @@
 # at -qp 14 -cl 10 and qt 8, 10, 12 with every UV coder, times with the
 # minimum of 5 runs, and at two error targets (-uv_rmse), and renders the
 # tables with scripts/render_benchmarks.py.
-# Timings need an otherwise idle machine. Takes about 10 minutes.
+# Timings need an otherwise idle machine. Takes about 15 minutes.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
