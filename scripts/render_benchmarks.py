@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Renders BENCHMARKS.md from draco_uv_eval's CSV (scripts/run-benchmarks.sh).
 
-  render_benchmarks.py CORPUS.csv MANIFEST.tsv GLTF.csv > BENCHMARKS.md
+  render_benchmarks.py CORPUS.csv MANIFEST.tsv GLTF.csv DECODE_TIME.md \
+      RMSE.csv > BENCHMARKS.md
 
 The hand-written parts live in scripts/benchmarks_template.md; each
 {{name}} there is replaced by the table of that name below.
@@ -96,6 +97,38 @@ def per_mesh(table, kinds, qt):
     return "\n".join(lines)
 
 
+def error_target(csv_path, kinds):
+    """Per mesh and error target: the lossless codings that meet it at the
+    coarsest -qt whose grid does, against what -uv_rmse chose."""
+    rows = [r for r in csv.DictReader(open(csv_path)) if r["scheme"] == "rmse"]
+    lines = ["| mesh | kind | RMSE target | -qt meeting it | stock UV bytes"
+             " | auto UV bytes | -uv_rmse UV bytes | / best lossless | choice"
+             " (trial encodes) | enc ms |",
+             "| --- | --- | ---: | ---: | ---: | ---: | ---: | ---: | --- "
+             "| ---: |"]
+    ratios = defaultdict(list)
+    for row in sorted(rows, key=lambda r: (float(r["target_rmse"]) < 1e-3,
+                                           r["mesh"])):
+        target = float(row["target_rmse"])
+        stock = round(int(row["uv_bytes"]) / ratio(row))
+        best = min(stock, int(row["lossless_uv_bytes"]))
+        chosen = int(row["uv_bytes"]) / best
+        if kinds.get(row["mesh"]) != SYNTHETIC:
+            ratios[target].append(chosen)
+        lines.append(
+            f"| {row['mesh']} | {kinds.get(row['mesh'], '')} | {target:.3g} | "
+            f"{row['lossless_qt']} | {stock} | {row['lossless_uv_bytes']} | "
+            f"{row['uv_bytes']} | {chosen:.3f} | {row['choice']} | "
+            f"{float(row['enc_ms']):.0f} |")
+    lines.append("")
+    for target, values in sorted(ratios.items(), reverse=True):
+        lines.append(f"RMSE {target:.3g}: -uv_rmse / best lossless over the "
+                     f"{len(values)} real meshes: median "
+                     f"{statistics.median(values):.3f}, max {max(values):.3f}.")
+        lines.append("")
+    return "\n".join(lines).rstrip()
+
+
 def paper_table1(table, kinds):
     schemes = [("parallelogram", "Parallelogram (Draco)"),
                ("portable", "Portable (Draco)"), ("weighted", "Weighted (ours)"),
@@ -176,6 +209,7 @@ def main():
         "paper_table2": paper_table2(table, kinds),
         "gltf": gltf(sys.argv[3]),
         "decode_time": open(sys.argv[4]).read().strip(),
+        "error_target": error_target(sys.argv[5], kinds),
     }
     template = open(os.path.join(os.path.dirname(__file__),
                                  "benchmarks_template.md")).read()

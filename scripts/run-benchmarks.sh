@@ -6,8 +6,9 @@
 # CORPUS_DIR defaults to ../shared/corpus (MANIFEST.tsv and meshes/*.obj),
 # BUILD_DIR to build (after ./draco-uv.sh test or demo). Runs draco_uv_eval
 # at -qp 14 -cl 10 and qt 8, 10, 12 with every UV coder, times with the
-# minimum of 5 runs, and renders the tables with scripts/render_benchmarks.py.
-# Timings need an otherwise idle machine. Takes about 10 minutes.
+# minimum of 5 runs, and at two error targets (-uv_rmse), and renders the
+# tables with scripts/render_benchmarks.py.
+# Timings need an otherwise idle machine. Takes about 15 minutes.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -20,6 +21,12 @@ mkdir -p "${out}"
 "${build}/draco/draco_uv_eval" "${corpus}/meshes" --qt 8,10,12 --qp 14 --cl 10 \
   --schemes "${schemes}" --repeat 5 --csv "${out}/corpus.csv" \
   >"${out}/corpus.txt"
+
+# Encoding to an error target: RMSE 1.5e-3 and half a texel of a 4096
+# texture, against the lossless codings that meet them.
+"${build}/draco/draco_uv_eval" "${corpus}/meshes" --qt 12 --qp 14 --cl 10 \
+  --schemes draco --rmse 0.0015 --texels 0.5 --repeat 1 \
+  --csv "${out}/rmse.csv" >"${out}/rmse.txt"
 
 # Rate-distortion charts of three representative meshes, with the lossy
 # Laplacian coders next to the lossless ones.
@@ -42,5 +49,5 @@ python=/usr/bin/python3
 [[ -x ${python} ]] || python=python3
 "${python}" scripts/render_benchmarks.py "${out}/corpus.csv" \
   "${corpus}/MANIFEST.tsv" "${out}/gltf.csv" "${out}/decode_time.md" \
-  >BENCHMARKS.md
+  "${out}/rmse.csv" >BENCHMARKS.md
 echo "wrote BENCHMARKS.md and ${out}/"

@@ -21,17 +21,15 @@
 #include <filesystem>
 #include <limits>
 #include <map>
-#include <unordered_map>
-#include <unordered_set>
 
 #include "draco/compression/bit_coders/rans_bit_encoder.h"
 #include "draco/compression/decode.h"
-#include "draco/core/quantization_utils.h"
 #include "draco/mesh/mesh_attribute_corner_table.h"
 #include "draco/mesh/mesh_misc_functions.h"
 #include "draco_ext/common/uv_vertices.h"
-#include "draco_ext/options/uv_encode_settings.h"
 #include "draco_ext/eval/uv_seam_stats.h"
+#include "draco_ext/options/uv_encode_settings.h"
+#include "draco_ext/options/uv_error_target.h"
 
 namespace draco {
 
@@ -127,87 +125,6 @@ std::vector<float> CornerUvs(const Mesh &mesh) {
   return values;
 }
 
-// Quantizes positions like Draco's AttributeQuantizationTransform, with the
-// parameters of the original mesh, so that decoded positions map back to the
-// original's integers.
-class PositionKeyer {
- public:
-  PositionKeyer(const PointAttribute &position, int qp) {
-    min_.fill(std::numeric_limits<float>::max());
-    std::array<float, 3> max;
-    max.fill(std::numeric_limits<float>::lowest());
-    for (AttributeValueIndex i(0); i < position.size(); ++i) {
-      std::array<float, 3> p;
-      position.GetValue(i, p.data());
-      for (int c = 0; c < 3; ++c) {
-        min_[c] = std::min(min_[c], p[c]);
-        max[c] = std::max(max[c], p[c]);
-      }
-    }
-    float range = 0.f;
-    for (int c = 0; c < 3; ++c) {
-      range = std::max(range, max[c] - min_[c]);
-    }
-    quantizer_.Init(range > 0.f ? range : 1.f, (1 << qp) - 1);
-  }
-
-  // The face's quantized corner positions in a canonical rotation;
-  // |rotation| receives the face corner it starts at.
-  std::array<int32_t, 9> FaceKey(const Mesh &mesh, FaceIndex f,
-                                 int *rotation) const {
-    const PointAttribute &position =
-        *mesh.GetNamedAttribute(GeometryAttribute::POSITION);
-    std::array<std::array<int32_t, 3>, 3> corners;
-    for (int k = 0; k < 3; ++k) {
-      std::array<float, 3> p;
-      position.ConvertValue(position.mapped_index(mesh.face(f)[k]), 3,
-                            p.data());
-      for (int c = 0; c < 3; ++c) {
-        corners[k][c] = quantizer_.QuantizeFloat(p[c] - min_[c]);
-      }
-    }
-    // The smallest of the three rotations, so that faces with repeated
-    // corners get one key too.
-    std::array<int32_t, 9> best_key;
-    for (int start = 0; start < 3; ++start) {
-      std::array<int32_t, 9> key;
-      for (int k = 0; k < 3; ++k) {
-        const auto &corner = corners[(start + k) % 3];
-        std::copy(corner.begin(), corner.end(), key.begin() + 3 * k);
-      }
-      if (start == 0 || key < best_key) {
-        best_key = key;
-        *rotation = start;
-      }
-    }
-    return best_key;
-  }
-
- private:
-  std::array<float, 3> min_;
-  Quantizer quantizer_;
-};
-
-// Squared UV distance between corner k (canonical order) of two faces,
-// summed over all UV sets.
-double FaceUvError2(const Mesh &a, FaceIndex fa, int rot_a, const Mesh &b,
-                    FaceIndex fb, int rot_b, int k) {
-  const auto atts_a = TexCoordAttributes(a);
-  const auto atts_b = TexCoordAttributes(b);
-  double error2 = 0;
-  for (size_t i = 0; i < atts_a.size() && i < atts_b.size(); ++i) {
-    const auto ua = UvAt(*atts_a[i], a.face(fa)[(rot_a + k) % 3]);
-    const auto ub = UvAt(*atts_b[i], b.face(fb)[(rot_b + k) % 3]);
-    error2 += (ua[0] - ub[0]) * double(ua[0] - ub[0]) +
-              (ua[1] - ub[1]) * double(ua[1] - ub[1]);
-  }
-  return error2;
-}
-
-// Original faces by position key, each with its rotation.
-typedef std::map<std::array<int32_t, 9>, std::vector<std::pair<FaceIndex, int>>>
-    FaceIndexByKey;
-
 }  // namespace
 
 std::vector<std::string> ListMeshFiles(const std::string &input) {
@@ -263,59 +180,6 @@ double StockSeamBytes(const Mesh &mesh) {
   return bytes;
 }
 
-StatusOr<double> UvRmse(const Mesh &original, const Mesh &decoded, int qp) {
-  const PointAttribute *const position =
-      original.GetNamedAttribute(GeometryAttribute::POSITION);
-  if (position == nullptr ||
-      decoded.GetNamedAttribute(GeometryAttribute::POSITION) == nullptr) {
-    return Status(Status::DRACO_ERROR, "RMSE needs positions.");
-  }
-  const PositionKeyer keyer(*position, qp);
-  FaceIndexByKey faces;
-  for (FaceIndex f(0); f < original.num_faces(); ++f) {
-    int rotation;
-    faces[keyer.FaceKey(original, f, &rotation)].push_back({f, rotation});
-  }
-  // Eq. (9): one error per texture vertex, i.e. per original point (a
-  // distinct combination of position and texture coordinates), taken the
-  // first time a decoded corner maps to it.
-  std::unordered_set<uint64_t> seen;
-  double sum2 = 0;
-  for (FaceIndex f(0); f < decoded.num_faces(); ++f) {
-    int rotation;
-    auto it = faces.find(keyer.FaceKey(decoded, f, &rotation));
-    if (it == faces.end() || it->second.empty()) {
-      return Status(Status::DRACO_ERROR,
-                    "RMSE: a decoded face has no original counterpart.");
-    }
-    // Duplicate faces (same positions): take the closest unused one.
-    auto &candidates = it->second;
-    size_t best = 0;
-    double best_error = std::numeric_limits<double>::max();
-    for (size_t i = 0; i < candidates.size(); ++i) {
-      double error = 0;
-      for (int k = 0; k < 3; ++k) {
-        error += FaceUvError2(original, candidates[i].first,
-                              candidates[i].second, decoded, f, rotation, k);
-      }
-      if (error < best_error) {
-        best_error = error;
-        best = i;
-      }
-    }
-    const auto match = candidates[best];
-    candidates.erase(candidates.begin() + best);
-    for (int k = 0; k < 3; ++k) {
-      const PointIndex point = original.face(match.first)[(match.second + k) % 3];
-      if (seen.insert(point.value()).second) {
-        sum2 += FaceUvError2(original, match.first, match.second, decoded, f,
-                             rotation, k);
-      }
-    }
-  }
-  return seen.empty() ? 0.0 : std::sqrt(sum2 / static_cast<double>(seen.size()));
-}
-
 namespace {
 
 // Everything measured once per mesh and qt that every scheme is compared to.
@@ -323,7 +187,7 @@ struct UvEvalBaseline {
   // At the evaluated -cl, per -uv_seams name (the seams of other
   // non-position attributes, e.g. normals, depend on it).
   std::map<UvSeamCoding, int64_t> size_without_uvs;
-  int64_t stock_best_uv_bytes = 0;  // Best of -cl 7 and -cl 10.
+  int64_t stock_best_uv_bytes = 0;   // Best of -cl 7 and -cl 10.
   std::vector<float> reference_uvs;  // Stock Draco's decoded UVs.
 };
 
@@ -351,8 +215,7 @@ StatusOr<int64_t> StockUvBytes(const Mesh &mesh, const Mesh &without,
 }
 
 StatusOr<UvEvalBaseline> MeasureBaseline(const Mesh &mesh, const Mesh &without,
-                                         const UvEvalOptions &options,
-                                         int qt) {
+                                         const UvEvalOptions &options, int qt) {
   UvEvalBaseline baseline;
   UvEncodeSettings settings{options.qp, 0, options.cl};
   for (const std::string &scheme : MeasuredSchemes(options)) {
@@ -371,7 +234,8 @@ StatusOr<UvEvalBaseline> MeasureBaseline(const Mesh &mesh, const Mesh &without,
     settings.cl = cl;
     DRACO_ASSIGN_OR_RETURN(const int64_t bytes,
                            StockUvBytes(mesh, without, settings));
-    baseline.stock_best_uv_bytes = std::min(baseline.stock_best_uv_bytes, bytes);
+    baseline.stock_best_uv_bytes =
+        std::min(baseline.stock_best_uv_bytes, bytes);
   }
   settings.cl = options.cl;
   TimedEncoding stock;
@@ -392,6 +256,44 @@ StatusOr<double> SeamBytes(const Mesh &mesh, const UvEncodeSettings &settings) {
   return static_cast<double>(ContextSeamStreamBytes(problem));
 }
 
+// Encodes |mesh| with |settings| and fills |row|'s sizes, times and error.
+Status MeasureSettings(const Mesh &mesh, const UvEvalOptions &options,
+                       const UvEncodeSettings &settings,
+                       const UvEvalBaseline &baseline, UvEvalRow *row) {
+  row->uv_vertices = CountUvVertices(mesh);
+  const int64_t size_without_uvs =
+      baseline.size_without_uvs.at(settings.uv.seams);
+  TimedEncoding encoding;
+  DRACO_RETURN_IF_ERROR(EncodeTimed(mesh, settings, options.repeat, &encoding));
+  row->enc_ms = encoding.ms;
+  DRACO_ASSIGN_OR_RETURN(
+      const auto decoded,
+      DecodeTimed(encoding.buffer, options.repeat, &row->dec_ms));
+  row->uv_bytes =
+      static_cast<int64_t>(encoding.buffer.size()) - size_without_uvs;
+  DRACO_ASSIGN_OR_RETURN(row->seam_bytes, SeamBytes(mesh, settings));
+  row->bpv =
+      row->uv_vertices > 0 ? 8.0 * row->uv_bytes / row->uv_vertices : 0.0;
+  row->ratio_vs_draco =
+      static_cast<double>(row->uv_bytes) / baseline.stock_best_uv_bytes;
+  if (row->target_rmse > 0) {  // Lossless choices decode to stock's UVs.
+    row->lossy = encoding.summary.find("-> laplacian") != std::string::npos;
+  }
+  row->round_trip_ok =
+      row->lossy || CornerUvs(*decoded) == baseline.reference_uvs;
+  DRACO_ASSIGN_OR_RETURN(row->rmse, UvRmse(mesh, *decoded, options.qp));
+  if (row->target_rmse > 0) {  // Each UV set meets the target.
+    for (int i = 0; i < mesh.NumNamedAttributes(GeometryAttribute::TEX_COORD);
+         ++i) {
+      DRACO_ASSIGN_OR_RETURN(const double rmse,
+                             UvRmseOf(mesh, *decoded, options.qp, i));
+      row->round_trip_ok = row->round_trip_ok && rmse <= row->target_rmse;
+    }
+  }
+  row->detail = encoding.summary;
+  return OkStatus();
+}
+
 StatusOr<UvEvalRow> MeasureScheme(const std::string &name, const Mesh &mesh,
                                   const UvEvalOptions &options, int qt,
                                   const std::string &scheme,
@@ -400,32 +302,63 @@ StatusOr<UvEvalRow> MeasureScheme(const std::string &name, const Mesh &mesh,
   row.mesh = name;
   row.scheme = scheme;
   row.qt = qt;
-  row.uv_vertices = CountUvVertices(mesh);
   UvEncodeSettings settings{options.qp, qt, options.cl};
   DRACO_ASSIGN_OR_RETURN(settings.uv, ParseUvSchemeName(scheme));
   row.lossy = IsUvLaplacian(settings.uv.prediction);
   if (row.lossy) {
     settings.uv.anchors = options.uv_anchors;
   }
-  const int64_t size_without_uvs =
-      baseline.size_without_uvs.at(settings.uv.seams);
-  TimedEncoding encoding;
   DRACO_RETURN_IF_ERROR(
-      EncodeTimed(mesh, settings, options.repeat, &encoding));
-  row.enc_ms = encoding.ms;
-  DRACO_ASSIGN_OR_RETURN(const auto decoded,
-                         DecodeTimed(encoding.buffer, options.repeat, &row.dec_ms));
-  row.uv_bytes =
-      static_cast<int64_t>(encoding.buffer.size()) - size_without_uvs;
-  DRACO_ASSIGN_OR_RETURN(row.seam_bytes, SeamBytes(mesh, settings));
-  row.bpv = row.uv_vertices > 0 ? 8.0 * row.uv_bytes / row.uv_vertices : 0.0;
-  row.ratio_vs_draco =
-      static_cast<double>(row.uv_bytes) / baseline.stock_best_uv_bytes;
-  row.round_trip_ok =
-      row.lossy || CornerUvs(*decoded) == baseline.reference_uvs;
-  DRACO_ASSIGN_OR_RETURN(row.rmse, UvRmse(mesh, *decoded, options.qp));
-  row.detail = encoding.summary;
+      MeasureSettings(mesh, options, settings, baseline, &row));
   return row;
+}
+
+// The coarsest -qt whose quantisation grid meets |max_rmse| in every UV
+// set: where the lossless codings that meet it are smallest.
+StatusOr<int> LosslessQtFor(const Mesh &mesh, double max_rmse) {
+  int qt = 1;
+  for (int i = 0; i < mesh.NumNamedAttributes(GeometryAttribute::TEX_COORD);
+       ++i) {
+    DRACO_ASSIGN_OR_RETURN(
+        const int bits,
+        SmallestQuantizationBitsFor(
+            mesh, *mesh.GetNamedAttribute(GeometryAttribute::TEX_COORD, i),
+            max_rmse, 30));
+    if (bits < 0) {
+      return ErrorStatus("No quantization meets RMSE " +
+                         std::to_string(max_rmse) + ".");
+    }
+    qt = std::max(qt, bits);
+  }
+  return qt;
+}
+
+// The rows of error target |max_rmse|, one per -uv_seams name.
+Status MeasureErrorTarget(const std::string &name, const Mesh &mesh,
+                          const Mesh &without, const UvEvalOptions &options,
+                          double max_rmse, std::vector<UvEvalRow> *rows) {
+  DRACO_ASSIGN_OR_RETURN(const int lossless_qt, LosslessQtFor(mesh, max_rmse));
+  DRACO_ASSIGN_OR_RETURN(const UvEvalBaseline baseline,
+                         MeasureBaseline(mesh, without, options, lossless_qt));
+  for (const std::string &seams : options.seams) {
+    const std::string suffix = seams == "draco" ? "" : "+" + seams;
+    UvEvalRow row;
+    row.mesh = name;
+    row.scheme = "rmse" + suffix;
+    row.target_rmse = max_rmse;
+    row.lossless_qt = lossless_qt;
+    DRACO_ASSIGN_OR_RETURN(const UvEvalRow lossless,
+                           MeasureScheme(name, mesh, options, lossless_qt,
+                                         "auto" + suffix, baseline));
+    row.lossless_uv_bytes = lossless.uv_bytes;
+    UvEncodeSettings settings{options.qp, lossless_qt, options.cl};
+    DRACO_ASSIGN_OR_RETURN(settings.uv, ParseUvSchemeName("draco" + suffix));
+    settings.uv.rmse = max_rmse;
+    DRACO_RETURN_IF_ERROR(
+        MeasureSettings(mesh, options, settings, baseline, &row));
+    rows->push_back(std::move(row));
+  }
+  return OkStatus();
 }
 
 }  // namespace
@@ -461,6 +394,10 @@ StatusOr<std::vector<UvEvalRow>> EvaluateMesh(const std::string &name,
           MeasureScheme(name, mesh, options, qt, scheme, baseline));
       rows.push_back(std::move(row));
     }
+  }
+  for (const double max_rmse : options.rmse_targets) {
+    DRACO_RETURN_IF_ERROR(
+        MeasureErrorTarget(name, mesh, *without, options, max_rmse, &rows));
   }
   return rows;
 }

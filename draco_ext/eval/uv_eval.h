@@ -25,6 +25,7 @@
 
 #include "draco/core/status_or.h"
 #include "draco/mesh/mesh.h"
+#include "draco_ext/common/uv_rmse.h"  // IWYU pragma: export
 #include "draco_ext/options/uv_compression_options.h"
 
 namespace draco {
@@ -45,6 +46,10 @@ struct UvEvalOptions {
   std::vector<std::string> seams = {"draco"};
   // -uv_anchors of the Laplacian schemes; unset means the default.
   std::optional<UvAnchorSpec> uv_anchors;
+  // Error targets (-uv_rmse R, UV units): per target and -uv_seams name a
+  // row of scheme "rmse" (with seams: "rmse+<coding>") with exactly what
+  // draco_encoder -uv_rmse R writes, qt 0.
+  std::vector<double> rmse_targets;
 };
 
 // The options a measured scheme name stands for: "<uv_pred>[+<uv_seams>]",
@@ -74,6 +79,13 @@ struct UvEvalRow {
   // for lossy ones (their error is |rmse|).
   bool round_trip_ok = false;
   std::string detail;          // E.g. what "auto" chose.
+  // Rows of an error target: the target (else 0), the UV bytes of the
+  // lossless coding that meets it (-uv_pred auto at the coarsest -qt whose
+  // grid meets it) and that -qt. ratio_vs_draco compares with stock
+  // Draco's best at that -qt; round_trip_ok says the target was met.
+  double target_rmse = 0;
+  int64_t lossless_uv_bytes = 0;
+  int lossless_qt = 0;
 };
 
 // Distinct (position, texture coordinate) pairs over all TEX_COORD
@@ -88,10 +100,6 @@ std::vector<std::string> ListMeshFiles(const std::string &input);
 // Bytes stock Draco's Edgebreaker spends on the seams of the TEX_COORD
 // attributes: one static-probability rANS bit per interior edge each.
 double StockSeamBytes(const Mesh &mesh);
-
-// RMSE (eq. 9) of |decoded|'s texture coordinates against |original|'s,
-// matching faces by their positions quantized with |qp| bits.
-StatusOr<double> UvRmse(const Mesh &original, const Mesh &decoded, int qp);
 
 // Measures every scheme of |options| at every qt on |mesh|.
 StatusOr<std::vector<UvEvalRow>> EvaluateMesh(const std::string &name,

@@ -15,6 +15,7 @@
 #include "draco_ext/eval/uv_eval_report.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdarg>
 #include <cstdio>
 #include <cstdlib>
@@ -130,23 +131,61 @@ std::string FormatMeshTable(const std::vector<UvEvalRow> &rows) {
         row.seam_bytes, row.bpv, row.ratio_vs_draco, row.rmse,
         row.rmse * kTexelsPerUvUnit, row.enc_ms, row.dec_ms,
         !row.round_trip_ok ? "MISMATCH" : row.lossy ? "lossy" : "ok");
+    if (row.target_rmse > 0) {
+      table +=
+          Format(
+              "      lossless at the target: auto -qt %d, %lld UV "
+              "bytes\n      ",
+              row.lossless_qt, static_cast<long long>(row.lossless_uv_bytes)) +
+          row.detail;
+    }
   }
   return table;
 }
 
 std::string CsvHeader() {
   return "mesh,scheme,qt,uv_vertices,uv_bytes,seam_bytes,bpv,rmse,"
-         "rmse_texels,enc_ms,dec_ms,ratio_vs_draco,round_trip\n";
+         "rmse_texels,enc_ms,dec_ms,ratio_vs_draco,round_trip,target_rmse,"
+         "lossless_qt,lossless_uv_bytes,choice\n";
+}
+
+// What an error target's row chose: per summary line (one per UV set)
+// the coding and the trial encodes, without commas, e.g.
+// "laplacian_mv -qt 9 -uv_anchors default (8 trials)".
+std::string TargetChoice(const UvEvalRow &row) {
+  std::string choice;
+  if (row.target_rmse <= 0) {
+    return choice;
+  }
+  size_t line = 0;
+  for (size_t at; (at = row.detail.find("-> ", line)) != std::string::npos;
+       line = row.detail.find('\n', at)) {
+    const size_t end = row.detail.find(", ", at);
+    size_t digits = row.detail.find(" trial encodes)", at);
+    const size_t trials_end = digits;
+    while (digits > 0 && std::isdigit(row.detail[digits - 1])) {
+      --digits;
+    }
+    choice += (choice.empty() ? "" : " / ") +
+              row.detail.substr(at + 3, end - at - 3) + " (" +
+              row.detail.substr(digits, trials_end - digits) + " trials)";
+  }
+  return choice;
 }
 
 std::string CsvLine(const UvEvalRow &row) {
-  return Format("%s,%s,%d,%lld,%lld,%.0f,%.4f,%.6e,%.4f,%.3f,%.3f,%.4f,%s\n",
+  return Format("%s,%s,%d,%lld,%lld,%.0f,%.4f,%.6e,%.4f,%.3f,%.3f,%.4f,%s,",
                 row.mesh.c_str(), row.scheme.c_str(), row.qt,
                 static_cast<long long>(row.uv_vertices),
                 static_cast<long long>(row.uv_bytes), row.seam_bytes, row.bpv,
                 row.rmse, row.rmse * kTexelsPerUvUnit, row.enc_ms, row.dec_ms,
                 row.ratio_vs_draco,
-                !row.round_trip_ok ? "mismatch" : row.lossy ? "lossy" : "ok");
+                !row.round_trip_ok ? "mismatch"
+                : row.lossy        ? "lossy"
+                                   : "ok") +
+         Format("%.6e,%d,%lld,", row.target_rmse, row.lossless_qt,
+                static_cast<long long>(row.lossless_uv_bytes)) +
+         TargetChoice(row) + "\n";
 }
 
 void UvEvalReport::Add(const std::vector<UvEvalRow> &rows) {
@@ -154,10 +193,14 @@ void UvEvalReport::Add(const std::vector<UvEvalRow> &rows) {
 }
 
 std::string UvEvalReport::FormatSummary() const {
-  std::map<std::pair<int, std::string>, std::map<std::string, std::vector<double>>>
+  std::map<std::pair<int, std::string>,
+           std::map<std::string, std::vector<double>>>
       ratios, bpvs;
   for (const UvEvalRow &row : rows_) {
-    const auto key = std::make_pair(row.qt, row.scheme);
+    const auto key = std::make_pair(
+        row.qt, row.target_rmse > 0
+                    ? row.scheme + " " + Format("%g", row.target_rmse)
+                    : row.scheme);
     const auto kind = kinds_.find(row.mesh);
     for (const std::string &group :
          {std::string("all meshes"),
@@ -174,10 +217,10 @@ std::string UvEvalReport::FormatSummary() const {
       "qt, scheme, meshes", "n", "median", "mean", "max", "med bpv");
   for (const auto &entry : ratios) {
     for (const auto &group : entry.second) {
-      summary += SummaryLine(Format("qt %d %s (%s)", entry.first.first,
-                                    entry.first.second.c_str(),
-                                    group.first.c_str()),
-                             group.second, bpvs.at(entry.first).at(group.first));
+      summary +=
+          SummaryLine(Format("qt %d %s (%s)", entry.first.first,
+                             entry.first.second.c_str(), group.first.c_str()),
+                      group.second, bpvs.at(entry.first).at(group.first));
     }
   }
   return summary;
@@ -199,8 +242,8 @@ bool UvEvalReport::WritePlot(const std::string &path) const {
   }
   const std::string python =
       fs::exists("/usr/bin/python3") ? "/usr/bin/python3" : "python3";
-  const std::string command = python + " \"" DRACO_UV_PLOT_SCRIPT "\" \"" +
-                              csv + "\" \"" + path + "\"";
+  const std::string command =
+      python + " \"" DRACO_UV_PLOT_SCRIPT "\" \"" + csv + "\" \"" + path + "\"";
   const bool ok = std::system(command.c_str()) == 0;
   fs::remove(csv);
   return ok;

@@ -94,7 +94,7 @@ Status ConfigureUvCompressionForGltf(
   // are for command-line tools; a library stays quiet.
   DRACO_RETURN_IF_ERROR(
       ConfigureUvCompression(options, &mesh, &encoder).status());
-  if (options.prediction == UvPrediction::kAuto &&
+  if (options.ChoosesPrediction() &&
       extensions_required->count(kUvGltfExtension) == 0) {
     DRACO_RETURN_IF_ERROR(
         KeepDracoUvOnlyIfItPaysForTheExtension(mesh, &encoder));

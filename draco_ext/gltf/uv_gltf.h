@@ -59,7 +59,8 @@ Status KeepDracoUvOnlyIfItPaysForTheExtension(const Mesh &mesh,
 // attribute ends up with a draco-uv scheme or the seams with draco-uv's
 // coding (-uv_seams context, which applies to every primitive with an
 // attribute besides positions), adds kUvGltfExtension to |extensions_used|
-// and |extensions_required|. With -uv_pred auto, primitives coded while the
+// and |extensions_required|. With -uv_pred auto, or an error target that
+// leaves the scheme to the encoder, primitives coded while the
 // extension is not yet required go through
 // KeepDracoUvOnlyIfItPaysForTheExtension(). Stock options change nothing.
 //

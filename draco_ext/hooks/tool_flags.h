@@ -14,7 +14,8 @@
 //
 // draco-uv's command-line flags as draco_encoder (patches/0004) and
 // draco_transcoder (patches/0011) take them: IsUvCompressionFlag() and
-// ParseUvCompressionFlag() read -uv_pred, -uv_seams and -uv_anchors into a
+// ParseUvCompressionFlag() read -uv_pred, -uv_seams, -uv_anchors and the
+// error target (-uv_rmse, -uv_texels, -uv_texture_size) into a
 // UvCompressionOptions, UvCompressionUsage() is their help text, and
 // ConfigureUvCompression() applies them to draco_encoder's ExpertEncoder. A
 // new flag changes none of the patches.

@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <utility>
 
 #include "draco_ext/laplacian/uv_laplacian_settings.h"
 
@@ -32,6 +33,11 @@ namespace {
 constexpr char kPredictionFlag[] = "-uv_pred";
 constexpr char kSeamsFlag[] = "-uv_seams";
 constexpr char kAnchorsFlag[] = "-uv_anchors";
+constexpr char kRmseFlag[] = "-uv_rmse";
+constexpr char kTexelsFlag[] = "-uv_texels";
+constexpr char kTextureSizeFlag[] = "-uv_texture_size";
+// Largest -uv_texture_size: 2^24 texels, beyond any GPU's textures.
+constexpr long kMaxTextureSize = 1 << 24;
 constexpr char kRandomPrefix[] = "random:";
 
 struct UvSeamCodingName {
@@ -88,6 +94,18 @@ bool ParsePercent(const std::string &text, double *percent) {
   }
   *percent = value;
   return true;
+}
+
+StatusOr<int> ParseTextureSize(const std::string &value) {
+  char *end = nullptr;
+  const long size = std::strtol(value.c_str(), &end, 10);
+  if (value.empty() || *end != '\0' || size < 1 || size > kMaxTextureSize) {
+    return ErrorStatus(std::string(kTextureSizeFlag) +
+                       " needs a whole number of texels from 1 to " +
+                       std::to_string(kMaxTextureSize) + ", got '" + value +
+                       "'.");
+  }
+  return static_cast<int>(size);
 }
 
 // One help line per name, descriptions aligned.
@@ -220,7 +238,36 @@ StatusOr<UvAnchorSpec> ParseUvAnchorSpec(const std::string &spec) {
   return parsed;
 }
 
+StatusOr<double> ParseUvErrorTarget(const std::string &flag,
+                                    const std::string &value) {
+  char *end = nullptr;
+  const double target = std::strtod(value.c_str(), &end);
+  if (value.empty() || *end != '\0' || !std::isfinite(target) ||
+      target <= 0.0) {
+    return ErrorStatus(flag + " needs a positive number, got '" + value + "'.");
+  }
+  return target;
+}
+
 Status CheckUvCompressionOptions(const UvCompressionOptions &options) {
+  if (options.rmse.has_value() && options.texels.has_value()) {
+    return ErrorStatus(
+        "-uv_rmse and -uv_texels both set an error target: give one.");
+  }
+  for (const auto &[flag, target] :
+       {std::make_pair(kRmseFlag, options.rmse),
+        std::make_pair(kTexelsFlag, options.texels)}) {
+    if (target.has_value() && !(std::isfinite(*target) && *target > 0.0)) {
+      return ErrorStatus(std::string(flag) + " needs a positive number.");
+    }
+  }
+  if (options.texture_size.has_value() &&
+      (!options.texels.has_value() || *options.texture_size < 1 ||
+       *options.texture_size > kMaxTextureSize)) {
+    return ErrorStatus(std::string(kTextureSizeFlag) +
+                       " needs -uv_texels and 1 to " +
+                       std::to_string(kMaxTextureSize) + " texels.");
+  }
   if (IsUvLaplacian(options.prediction) && !HasUvLaplacianCoder()) {
     return ErrorStatus(std::string("-uv_pred ") +
                        UvPredictionNameOf(options.prediction) +
@@ -238,7 +285,10 @@ Status CheckUvCompressionOptions(const UvCompressionOptions &options) {
 bool IsUvCompressionFlag(const char *arg) {
   return std::strcmp(arg, kPredictionFlag) == 0 ||
          std::strcmp(arg, kSeamsFlag) == 0 ||
-         std::strcmp(arg, kAnchorsFlag) == 0;
+         std::strcmp(arg, kAnchorsFlag) == 0 ||
+         std::strcmp(arg, kRmseFlag) == 0 ||
+         std::strcmp(arg, kTexelsFlag) == 0 ||
+         std::strcmp(arg, kTextureSizeFlag) == 0;
 }
 
 Status ParseUvCompressionFlag(int argc, char **argv, int *index,
@@ -252,6 +302,12 @@ Status ParseUvCompressionFlag(int argc, char **argv, int *index,
     DRACO_ASSIGN_OR_RETURN(options->seams, ParseUvSeamCodingName(value));
   } else if (flag == kAnchorsFlag) {
     DRACO_ASSIGN_OR_RETURN(options->anchors, ParseUvAnchorSpec(value));
+  } else if (flag == kRmseFlag) {
+    DRACO_ASSIGN_OR_RETURN(options->rmse, ParseUvErrorTarget(flag, value));
+  } else if (flag == kTexelsFlag) {
+    DRACO_ASSIGN_OR_RETURN(options->texels, ParseUvErrorTarget(flag, value));
+  } else if (flag == kTextureSizeFlag) {
+    DRACO_ASSIGN_OR_RETURN(options->texture_size, ParseTextureSize(value));
   } else {
     DRACO_ASSIGN_OR_RETURN(options->prediction, ParseUvPredictionName(value));
   }
@@ -271,6 +327,15 @@ std::string UvCompressionUsage() {
          "e.g. 2%);\n"
          "                          random:<K> or random:<P>% picks them at "
          "random\n"
+         "  -uv_rmse <R>          error target of TEX_COORD attributes: "
+         "the smallest\n"
+         "                          coding (scheme, -qt, anchors) whose "
+         "decoded RMSE\n"
+         "                          (UV units) is at most R, e.g. 0.0015; "
+         "overrides -qt\n"
+         "  -uv_texels <T>        the same target in texels of the "
+         "texture, e.g. 0.5\n"
+         "  -uv_texture_size <N>  texels of that texture (default 4096)\n"
          "  -uv_seams <name>      coding of attribute seams (needs -cl 5..10 "
          "to matter):\n" +
          NameLines(std::begin(kSeamCodingNames), std::end(kSeamCodingNames));
@@ -284,16 +349,17 @@ Status CheckUvCompressionOptions(const DracoCompressionOptions &options) {
     return OkStatus();
   }
   if (options.compression_level < 1) {
-    return ErrorStatus(std::string(uv.prediction != UvPrediction::kDraco
-                                       ? kPredictionFlag
-                                       : kSeamsFlag) +
-                       " needs Edgebreaker encoding: compression level 1 or "
-                       "more.");
+    return ErrorStatus(
+        std::string(uv.prediction != UvPrediction::kDraco ? kPredictionFlag
+                    : uv.seams != UvSeamCoding::kDraco    ? kSeamsFlag
+                                                          : kRmseFlag) +
+        " needs Edgebreaker encoding: compression level 1 or "
+        "more.");
   }
   if (uv.prediction == UvPrediction::kDraco) {
     return OkStatus();
   }
-  if (options.quantization_bits_tex_coord <= 0) {
+  if (options.quantization_bits_tex_coord <= 0 && !uv.MaxUvRmse().has_value()) {
     return ErrorStatus("-uv_pred needs quantized texture coordinates.");
   }
   const bool positions_quantized =

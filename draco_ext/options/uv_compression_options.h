@@ -36,6 +36,11 @@
 //                       context-modelled crease bits)
 //   -uv_anchors K|P%|random:K|random:P%
 //                       extra anchors of the Laplacian names (default 50)
+//   -uv_rmse R          error target: per TEX_COORD attribute, the smallest
+//                       coding (scheme, -qt, anchors) whose decoded RMSE
+//                       (eq. 9, UV units) is at most R (uv_error_target.h)
+//   -uv_texels T        the same target as RMSE T / N, in texels of a
+//   -uv_texture_size N  texture of N texels (default 4096)
 //
 // Draco's compression options header includes this one (patches/0008), so
 // it depends on nothing but Draco's status and compression ids.
@@ -83,20 +88,43 @@ struct UvAnchorSpec {
 };
 
 struct UvCompressionOptions {
+  // -uv_texture_size without the flag.
+  static constexpr int kDefaultTextureSize = 4096;
+
   UvPrediction prediction = UvPrediction::kDraco;
   UvSeamCoding seams = UvSeamCoding::kDraco;
   // Extra anchors of the Laplacian predictions; unset keeps the default.
   std::optional<UvAnchorSpec> anchors;
+  // Error target, RMSE of eq. (9) per TEX_COORD attribute: -uv_rmse in UV
+  // units, or -uv_texels in texels of a -uv_texture_size texture.
+  std::optional<double> rmse;
+  std::optional<double> texels;
+  std::optional<int> texture_size;
 
+  // The error target in UV units, if one is set.
+  std::optional<double> MaxUvRmse() const {
+    if (texels.has_value()) {
+      return *texels / texture_size.value_or(kDefaultTextureSize);
+    }
+    return rmse;
+  }
+  // True when the encoder picks the prediction scheme itself: -uv_pred auto,
+  // or an error target without a specific -uv_pred.
+  bool ChoosesPrediction() const {
+    return prediction == UvPrediction::kAuto ||
+           (prediction == UvPrediction::kDraco && MaxUvRmse().has_value());
+  }
   // True when no draco-uv feature is requested.
   bool IsStock() const {
     return prediction == UvPrediction::kDraco &&
-           seams == UvSeamCoding::kDraco;
+           seams == UvSeamCoding::kDraco && !MaxUvRmse().has_value();
   }
   bool operator==(const UvCompressionOptions &other) const {
     return prediction == other.prediction && seams == other.seams &&
-           anchors == other.anchors;
+           anchors == other.anchors && rmse == other.rmse &&
+           texels == other.texels && texture_size == other.texture_size;
   }
+
   bool operator!=(const UvCompressionOptions &other) const {
     return !(*this == other);
   }
@@ -139,9 +167,16 @@ const char *UvSeamCodingNameOf(UvSeamCoding coding);
 // 0 <= P <= 100).
 StatusOr<UvAnchorSpec> ParseUvAnchorSpec(const std::string &spec);
 
-// The options on their own: -uv_anchors only with a Laplacian -uv_pred, and
-// a Laplacian -uv_pred only in a build with the Laplacian coder. Every
-// entry point checks this before it encodes.
+// Parses a -uv_rmse or -uv_texels value: a finite number > 0; |flag| names
+// the flag in the error.
+StatusOr<double> ParseUvErrorTarget(const std::string &flag,
+                                    const std::string &value);
+
+// The options on their own: -uv_anchors only with a Laplacian -uv_pred, a
+// Laplacian -uv_pred only in a build with the Laplacian coder, at most one
+// of -uv_rmse and -uv_texels, each finite and positive, and
+// -uv_texture_size only with -uv_texels. Every entry point checks this
+// before it encodes.
 Status CheckUvCompressionOptions(const UvCompressionOptions &options);
 
 // True when |arg| is one of draco-uv's command-line flags.

@@ -14,10 +14,35 @@
 //
 #include "draco_ext/options/uv_configure.h"
 
+#include "draco_ext/options/uv_error_target.h"
 #include "draco_ext/options/uv_prediction_options.h"
 #include "draco_ext/options/uv_seam_options.h"
 
 namespace draco {
+
+namespace {
+
+Status ErrorTargetNeedsMesh() {
+  return ErrorStatus(
+      "An error target (-uv_rmse, -uv_texels) applies to meshes, not to "
+      "point clouds.");
+}
+
+// The prediction of TEX_COORD attribute |att_id|: by the error target when
+// |options| set one, else by -uv_pred.
+StatusOr<std::string> ConfigurePredictionOf(const UvCompressionOptions &options,
+                                            const Mesh *mesh, int att_id,
+                                            ExpertEncoder *encoder) {
+  if (!options.MaxUvRmse().has_value()) {
+    return ConfigureUvPredictionOf(options, mesh, att_id, encoder);
+  }
+  if (mesh == nullptr) {
+    return ErrorTargetNeedsMesh();
+  }
+  return ConfigureUvErrorTarget(options, *mesh, att_id, encoder);
+}
+
+}  // namespace
 
 StatusOr<std::string> ConfigureUvCompression(
     const UvCompressionOptions &options, const Mesh *mesh,
@@ -25,9 +50,26 @@ StatusOr<std::string> ConfigureUvCompression(
   DRACO_RETURN_IF_ERROR(CheckUvCompressionOptions(options));
   DRACO_ASSIGN_OR_RETURN(const std::string seams,
                          ConfigureUvSeams(options.seams, mesh, encoder));
-  DRACO_ASSIGN_OR_RETURN(const std::string prediction,
-                         ConfigureUvPrediction(options, mesh, encoder));
-  return seams + prediction;
+  if (!options.MaxUvRmse().has_value()) {
+    DRACO_ASSIGN_OR_RETURN(const std::string prediction,
+                           ConfigureUvPrediction(options, mesh, encoder));
+    return seams + prediction;
+  }
+  if (mesh == nullptr) {
+    return ErrorTargetNeedsMesh();
+  }
+  std::string summary = seams;
+  for (int i = 0; i < mesh->NumNamedAttributes(GeometryAttribute::TEX_COORD);
+       ++i) {
+    DRACO_ASSIGN_OR_RETURN(
+        const std::string prediction,
+        ConfigureUvErrorTarget(
+            options, *mesh,
+            mesh->GetNamedAttributeId(GeometryAttribute::TEX_COORD, i),
+            encoder));
+    summary += prediction;
+  }
+  return summary;
 }
 
 StatusOr<std::string> ConfigureUvCompression(
@@ -53,7 +95,7 @@ StatusOr<std::string> ConfigureUvCompression(
   for (const auto &[att_id, options] : per_attribute) {
     DRACO_ASSIGN_OR_RETURN(
         const std::string prediction,
-        ConfigureUvPredictionOf(options, mesh, att_id, encoder));
+        ConfigurePredictionOf(options, mesh, att_id, encoder));
     summary += prediction;
   }
   return summary;

@@ -64,16 +64,6 @@ Status CheckCommonSettings(const ExpertEncoder &encoder, int att_id) {
   return OkStatus();
 }
 
-std::string AttributeLabel(const Mesh &mesh, int att_id) {
-  int index = 0;
-  while (mesh.GetNamedAttributeId(GeometryAttribute::TEX_COORD, index) !=
-         att_id) {
-    ++index;
-  }
-  return "TEX_COORD " + std::to_string(index) + " (attribute " +
-         std::to_string(att_id) + ")";
-}
-
 // True when the floating point attribute |att| holds a NaN or an infinity.
 bool HasNonFiniteValue(const PointAttribute &att) {
   if (att.data_type() != DT_FLOAT32 && att.data_type() != DT_FLOAT64) {
@@ -102,7 +92,7 @@ Status CheckFiniteValues(PredictionSchemeMethod method, const Mesh &mesh,
       return Status(Status::DRACO_ERROR,
                     "-uv_pred " + UvPredictionNameOf(method) + ": " +
                         (id == pos_id ? std::string("POSITION")
-                                      : AttributeLabel(mesh, att_id)) +
+                                      : UvAttributeLabel(mesh, att_id)) +
                         " has NaN or infinite values.");
     }
   }
@@ -168,19 +158,36 @@ std::vector<PredictionSchemeMethod> AutoCandidates() {
   return candidates;
 }
 
-// Picks the candidate for |att_id| with the smallest file, counting the
-// schemes that are slow to decode one byte larger per
-// kUvVerticesPerByteSlowDecodeMustSave UV vertices; leaves it set on
-// |encoder| and returns its summary line.
+// -uv_pred auto's choice, with its summary line.
 StatusOr<std::string> ChooseSmallestFor(const Mesh &mesh, int att_id,
                                         ExpertEncoder *encoder) {
+  DRACO_ASSIGN_OR_RETURN(const UvAutoChoice choice,
+                         ChooseSmallestUvPrediction(mesh, att_id, encoder));
+  return "UV prediction (auto): " + UvAttributeLabel(mesh, att_id) + " -> " +
+         UvPredictionNameOf(choice.method) + ", " +
+         std::to_string(choice.bytes) +
+         " bytes in all (draco: " + std::to_string(choice.stock_bytes) + ")\n";
+}
+
+}  // namespace
+
+std::string UvAttributeLabel(const Mesh &mesh, int att_id) {
+  int index = 0;
+  while (mesh.GetNamedAttributeId(GeometryAttribute::TEX_COORD, index) !=
+         att_id) {
+    ++index;
+  }
+  return "TEX_COORD " + std::to_string(index) + " (attribute " +
+         std::to_string(att_id) + ")";
+}
+
+StatusOr<UvAutoChoice> ChooseSmallestUvPrediction(const Mesh &mesh, int att_id,
+                                                  ExpertEncoder *encoder) {
   const size_t slow_handicap = (NumUvVertices(mesh, *mesh.attribute(att_id)) +
                                 kUvVerticesPerByteSlowDecodeMustSave - 1) /
                                kUvVerticesPerByteSlowDecodeMustSave;
-  PredictionSchemeMethod best_method = PREDICTION_UNDEFINED;
-  size_t best_size = 0;
+  UvAutoChoice choice;
   size_t best_cost = std::numeric_limits<size_t>::max();
-  size_t stock_size = 0;
   for (const PredictionSchemeMethod method : AutoCandidates()) {
     if (!CheckSettingsFor(method, mesh, *encoder, att_id).ok()) {
       continue;
@@ -188,9 +195,10 @@ StatusOr<std::string> ChooseSmallestFor(const Mesh &mesh, int att_id,
     DRACO_RETURN_IF_ERROR(
         encoder->SetAttributePredictionScheme(att_id, method));
     const StatusOr<size_t> size = EncodedSize(encoder);
+    ++choice.num_encodes;
     if (method == PREDICTION_UNDEFINED) {
       DRACO_RETURN_IF_ERROR(size.status());
-      stock_size = size.value();
+      choice.stock_bytes = size.value();
     }
     if (!size.ok()) {
       continue;
@@ -199,18 +207,14 @@ StatusOr<std::string> ChooseSmallestFor(const Mesh &mesh, int att_id,
         size.value() + (IsSlowToDecode(method) ? slow_handicap : 0);
     if (cost < best_cost) {
       best_cost = cost;
-      best_size = size.value();
-      best_method = method;
+      choice.bytes = size.value();
+      choice.method = method;
     }
   }
   DRACO_RETURN_IF_ERROR(
-      encoder->SetAttributePredictionScheme(att_id, best_method));
-  return "UV prediction (auto): " + AttributeLabel(mesh, att_id) + " -> " +
-         UvPredictionNameOf(best_method) + ", " + std::to_string(best_size) +
-         " bytes in all (draco: " + std::to_string(stock_size) + ")\n";
+      encoder->SetAttributePredictionScheme(att_id, choice.method));
+  return choice;
 }
-
-}  // namespace
 
 StatusOr<std::string> ConfigureUvPredictionOf(
     const UvCompressionOptions &options, const Mesh *mesh, int att_id,
@@ -240,7 +244,7 @@ StatusOr<std::string> ConfigureUvPredictionOf(
     DRACO_RETURN_IF_ERROR(ConfigureUvLaplacian(
         options.prediction, options.anchors, *mesh, att_id, encoder));
   }
-  return "UV prediction: " + AttributeLabel(*mesh, att_id) + " -> " +
+  return "UV prediction: " + UvAttributeLabel(*mesh, att_id) + " -> " +
          UvPredictionNameOf(options.prediction) + "\n";
 }
 

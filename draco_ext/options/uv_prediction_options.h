@@ -49,6 +49,26 @@ StatusOr<std::string> ConfigureUvPredictionOf(
     const UvCompressionOptions &options, const Mesh *mesh, int att_id,
     ExpertEncoder *encoder);
 
+// -uv_pred auto's choice for one TEX_COORD attribute.
+struct UvAutoChoice {
+  PredictionSchemeMethod method = PREDICTION_UNDEFINED;
+  size_t bytes = 0;        // The whole file with |method|.
+  size_t stock_bytes = 0;  // The whole file with Draco's own choice.
+  int num_encodes = 0;     // Trial encodes it took.
+};
+
+// -uv_pred auto for TEX_COORD attribute |att_id| of |mesh| on |encoder|,
+// whose settings (-cl, -qt) must already allow -uv_pred: encodes once per
+// lossless candidate the settings allow and leaves the smallest set,
+// counting weighted_multi (slower to decode) half a bit per UV vertex
+// larger. Stock Draco's choice comes first and wins ties.
+StatusOr<UvAutoChoice> ChooseSmallestUvPrediction(const Mesh &mesh, int att_id,
+                                                  ExpertEncoder *encoder);
+
+// "TEX_COORD <index> (attribute <att_id>)", how summaries name attribute
+// |att_id| of |mesh|, a TEX_COORD attribute.
+std::string UvAttributeLabel(const Mesh &mesh, int att_id);
+
 }  // namespace draco
 
 #endif  // DRACO_EXT_OPTIONS_UV_PREDICTION_OPTIONS_H_

@@ -23,9 +23,10 @@
 #include <vector>
 
 #include "draco/io/mesh_io.h"
-#include "draco_ext/tools/uv_tool_args.h"
 #include "draco_ext/eval/uv_eval.h"
 #include "draco_ext/eval/uv_eval_report.h"
+#include "draco_ext/options/uv_compression_options.h"
+#include "draco_ext/tools/uv_tool_args.h"
 
 namespace {
 
@@ -37,6 +38,8 @@ struct Args {
   std::string csv;
   std::string plot;
   bool progress = true;
+  std::vector<double> texels;  // --texels, in texels of --texture_size.
+  int texture_size = draco::UvCompressionOptions::kDefaultTextureSize;
 };
 
 void Usage() {
@@ -58,6 +61,11 @@ void Usage() {
       "  --uv_anchors K   -uv_anchors of the laplacian_* schemes (K, P%, "
       "random:K\n"
       "                   or random:P%), default 50 greedy\n"
+      "  --rmse LIST      error targets (RMSE, UV units): one row each, "
+      "scheme\n"
+      "                   rmse, of what draco_encoder -uv_rmse R writes\n"
+      "  --texels LIST    error targets in texels of a --texture_size texture\n"
+      "  --texture_size N texels of that texture, default 4096\n"
       "  --repeat N       timing runs (minimum reported), default 3\n"
       "  --csv FILE       one row per (mesh, scheme, qt)\n"
       "  --plot FILE      rate-distortion chart (PNG or SVG, needs python3 "
@@ -105,6 +113,21 @@ bool ParseArgs(int argc, char **argv, Args *args) {
         return false;
       }
       args->options.uv_anchors = anchors.value();
+    } else if (flag == "--rmse" || flag == "--texels") {
+      for (const std::string &item : draco::SplitUvToolList(argv[++i])) {
+        const auto target = draco::ParseUvErrorTarget(flag, item);
+        if (!target.ok()) {
+          fprintf(stderr, "Error: %s\n", target.status().error_msg());
+          return false;
+        }
+        (flag == "--rmse" ? args->options.rmse_targets : args->texels)
+            .push_back(target.value());
+      }
+    } else if (flag == "--texture_size") {
+      if (!draco::ParseUvToolInt(argv[++i], 1, 1 << 24, &args->texture_size)) {
+        fprintf(stderr, "Error: bad --texture_size value '%s'.\n", argv[i]);
+        return false;
+      }
     } else if (flag == "--csv") {
       args->csv = argv[++i];
     } else if (flag == "--plot") {
@@ -115,6 +138,12 @@ bool ParseArgs(int argc, char **argv, Args *args) {
       fprintf(stderr, "Error: unknown argument '%s'.\n", flag.c_str());
       return false;
     }
+  }
+  for (const double texels : args->texels) {  // As -uv_texels computes it.
+    draco::UvCompressionOptions target;
+    target.texels = texels;
+    target.texture_size = args->texture_size;
+    args->options.rmse_targets.push_back(*target.MaxUvRmse());
   }
   return !args->input.empty() && !args->options.qt.empty() &&
          !args->options.schemes.empty() && !args->options.seams.empty();

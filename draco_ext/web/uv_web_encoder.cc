@@ -14,6 +14,8 @@
 //
 #include "draco_ext/web/uv_web_encoder.h"
 
+#include <algorithm>
+#include <limits>
 #include <memory>
 
 #include "draco/compression/config/compression_shared.h"
@@ -45,9 +47,10 @@ bool WroteDracoUvIds(const Mesh &mesh, const ExpertEncoder &encoder,
          UsesDracoUvScheme(mesh, encoder);
 }
 
-// True when every attribute's options leave the choice to -uv_pred auto (or
-// keep Draco's own prediction) and one asks for auto: the case in which the
-// glTF encoder may fall back to stock coding.
+// True when every attribute's options leave the choice to the encoder
+// (-uv_pred auto, or an error target without -uv_pred) or keep Draco's own
+// prediction, and one leaves it to the encoder: the case in which the glTF
+// encoder may fall back to stock coding.
 bool OnlyAutoChooses(const std::map<int, UvCompressionOptions> &options) {
   bool any_auto = false;
   for (const auto &entry : options) {
@@ -56,7 +59,7 @@ bool OnlyAutoChooses(const std::map<int, UvCompressionOptions> &options) {
         prediction != UvPrediction::kDraco) {
       return false;
     }
-    any_auto = any_auto || prediction == UvPrediction::kAuto;
+    any_auto = any_auto || entry.second.ChoosesPrediction();
   }
   return any_auto;
 }
@@ -105,6 +108,32 @@ bool DracoUvOptions::SetAnchors(const char *spec) {
     options_.anchors = anchors.value();
   }
   return Result(anchors.status());
+}
+
+bool DracoUvOptions::SetRmse(double rmse) {
+  UvCompressionOptions target;
+  target.rmse = rmse;
+  const Status status = CheckUvCompressionOptions(target);
+  if (status.ok()) {
+    options_.rmse = rmse;
+    options_.texels.reset();
+    options_.texture_size.reset();
+  }
+  return Result(status);
+}
+
+bool DracoUvOptions::SetTexels(double texels, long texture_size) {
+  UvCompressionOptions target;
+  target.texels = texels;
+  target.texture_size = static_cast<int>(
+      std::clamp<long>(texture_size, 0, std::numeric_limits<int>::max()));
+  const Status status = CheckUvCompressionOptions(target);
+  if (status.ok()) {
+    options_.rmse.reset();
+    options_.texels = target.texels;
+    options_.texture_size = target.texture_size;
+  }
+  return Result(status);
 }
 
 UvWebModuleState &UvWebModuleState::Instance() {

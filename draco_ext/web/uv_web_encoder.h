@@ -15,7 +15,8 @@
 // What Draco's JavaScript encoder API (draco_web_encoder.idl, patches/0013)
 // adds for draco-uv's texture-coordinate coders:
 //   DracoUvOptions  one TEX_COORD attribute's coding, by draco_encoder's
-//                   flag names (-uv_pred, -uv_seams, -uv_anchors);
+//                   flag names (-uv_pred, -uv_seams, -uv_anchors, -uv_rmse,
+//                   -uv_texels);
 //   DracoUvModule   the module-wide default for every TEX_COORD attribute
 //                   without a setting of its own, a count of the encodes
 //                   that wrote draco-uv ids, and the glTF writes under way
@@ -60,6 +61,13 @@ class DracoUvOptions {
   bool SetSeams(const char *name);
   // A -uv_anchors value ("50", "2%", "random:50"); "" is the default.
   bool SetAnchors(const char *spec);
+  // An error target: -uv_rmse |rmse| (UV units), or -uv_texels |texels|
+  // -uv_texture_size |texture_size|; each replaces the other. Fails on
+  // values that are not finite and positive. The WebAssembly build has no
+  // decoder to measure the Laplacian coder with, so there the target
+  // chooses among the lossless schemes only (options/uv_error_target.h).
+  bool SetRmse(double rmse);
+  bool SetTexels(double texels, long texture_size);
   // Why the last failing Set* failed (listing the valid values), else "".
   const char *GetErrorMessage() const { return error_.c_str(); }
 

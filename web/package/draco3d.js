@@ -33,10 +33,11 @@ function createModuleFactory(wrapper, wasmFile) {
 
 /**
  * A DracoUvOptions of |encoderModule| for the settings {prediction, seams,
- * anchors} (draco_encoder's -uv_pred, -uv_seams and -uv_anchors values; an
- * absent or empty one keeps Draco's own). The caller destroys it with
- * encoderModule.destroy(). Throws an Error naming the valid values when a
- * value is unknown.
+ * anchors, rmse, texels, textureSize} (draco_encoder's -uv_pred, -uv_seams,
+ * -uv_anchors, -uv_rmse, -uv_texels and -uv_texture_size values; an absent
+ * or empty one keeps Draco's own, textureSize defaults to 4096). The caller
+ * destroys it with encoderModule.destroy(). Throws an Error naming the valid
+ * values when a value is unknown or an error target is not positive.
  */
 function createUvOptions(encoderModule, settings) {
   const options = new encoderModule.DracoUvOptions();
@@ -51,12 +52,28 @@ function createUvOptions(encoderModule, settings) {
       continue;
     }
     if (!options[setter](String(value))) {
-      const message = options.GetErrorMessage();
-      encoderModule.destroy(options);
-      throw new Error(`texCoordCompression.${key}: ${message}`);
+      fail(encoderModule, options, key);
     }
   }
+  const has = (key) => settings && settings[key] !== undefined &&
+      settings[key] !== null && settings[key] !== '';
+  if (has('rmse') && !options.SetRmse(Number(settings.rmse))) {
+    fail(encoderModule, options, 'rmse');
+  }
+  if (has('texels') &&
+      !options.SetTexels(Number(settings.texels),
+                         has('textureSize') ? Number(settings.textureSize) :
+                                              4096)) {
+    fail(encoderModule, options, 'texels');
+  }
   return options;
+}
+
+/** Destroys |options| and throws the error of its last failing setter. */
+function fail(encoderModule, options, key) {
+  const message = options.GetErrorMessage();
+  encoderModule.destroy(options);
+  throw new Error(`texCoordCompression.${key}: ${message}`);
 }
 
 /**
@@ -83,7 +100,8 @@ const createStockEncoderModule =
 
 /**
  * draco3d's createEncoderModule. With options.texCoordCompression
- * ({prediction, seams, anchors}), the module's default coding of texture
+ * ({prediction, seams, anchors, rmse, texels, textureSize}), the module's
+ * default coding of texture
  * coordinates is set before the promise resolves; the promise is rejected
  * with an Error naming the valid values when a value is unknown.
  */

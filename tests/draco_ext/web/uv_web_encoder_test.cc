@@ -19,6 +19,7 @@
 // UsedDracoUvCoding() and encode count. Each test has its own module state.
 #include "draco_ext/web/uv_web_encoder.h"
 
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -196,6 +197,37 @@ TEST(UvWebEncoderTest, ModuleDefaultWritesDracoEncodersBytes) {
       EXPECT_NE(std::string(web.GetUvCompressionMessage()).find("UV "),
                 std::string::npos);
     }
+  }
+}
+
+// SetRmse() and SetTexels() are draco_encoder's -uv_rmse and -uv_texels:
+// the same bytes natively, each replacing the other, bad values refused.
+TEST(UvWebEncoderTest, ErrorTargetsWriteDracoEncodersBytes) {
+  DracoUvOptions options;
+  for (const double bad : {0.0, -1.0, std::nan(""), HUGE_VAL}) {
+    EXPECT_FALSE(options.SetRmse(bad));
+    EXPECT_NE(std::string(options.GetErrorMessage()), "");
+    EXPECT_FALSE(options.SetTexels(bad, 4096));
+  }
+  EXPECT_FALSE(options.SetTexels(0.5, 0));
+  EXPECT_FALSE(options.options().MaxUvRmse().has_value());
+  const std::unique_ptr<Mesh> mesh = LoadMesh(UvTestdataPath("crane_spot.obj"));
+  for (const bool texels : {false, true}) {
+    ASSERT_TRUE(texels ? options.SetTexels(2.0, 1024) : options.SetRmse(1e-3))
+        << options.GetErrorMessage();
+    EXPECT_EQ(options.options().MaxUvRmse().value(),
+              texels ? 2.0 / 1024 : 1e-3);
+    UvWebModuleState state;
+    UvWebEncoder web(&state);
+    ASSERT_TRUE(web.SetForType(GeometryAttribute::TEX_COORD, &options))
+        << web.GetUvCompressionMessage();
+    UvEncodeSettings settings = Settings(14, 12, 10, "");
+    settings.uv = options.options();
+    const auto native = EncodeMeshToBytes(*mesh, settings);
+    ASSERT_TRUE(native.ok()) << native.status().error_msg_string();
+    EXPECT_EQ(EncodeWithEncoder(&web, *mesh), native.value());
+    EXPECT_NE(std::string(web.GetUvCompressionMessage()).find("error target"),
+              std::string::npos);
   }
 }
 
