@@ -35,7 +35,9 @@
 //                       coding of attribute seams (context: draco-uv's
 //                       context-modelled crease bits)
 //   -uv_anchors K|P%|random:K|random:P%
-//                       extra anchors of the Laplacian names (default 50)
+//                       extra anchors of the Laplacian names (default:
+//                       UvDefaultExtraAnchors(), 0.65 % of the texture
+//                       coordinates + 6 % of the boundary ones)
 //
 // Draco's compression options header includes this one (patches/0008), so
 // it depends on nothing but Draco's status and compression ids.
