@@ -67,6 +67,10 @@ class LaplacianSetup {
   const UvCharts &charts() const { return charts_; }
   const UvLaplacianOperator &op() const { return op_; }
   int num_vertices() const { return op_.num_rows(); }
+  int num_boundary_vertices() const {
+    return static_cast<int>(
+        std::count(boundary_.begin(), boundary_.end(), true));
+  }
   bool has_row(int v) const { return !op_.empty_row(v); }
   // Neighbours of v are op().column(i) for begin(v) <= i < end(v) (the
   // first entry of a row is its diagonal).
@@ -248,6 +252,15 @@ class LaplacianEncoder {
     }
   }
 
+  // The extra anchors asked for: K, or the default rule's number for this
+  // mesh.
+  int NumExtraAnchors() const {
+    return options_.extra_anchors == kUvLaplacianDefaultExtraAnchors
+               ? UvDefaultExtraAnchors(setup_.num_vertices(),
+                                       setup_.num_boundary_vertices())
+               : options_.extra_anchors;
+  }
+
   void AppendAnchorValue(int vertex) {
     anchor_q_.push_back({Quantize(uv_(vertex, 0), step_),
                          Quantize(uv_(vertex, 1), step_)});
@@ -265,7 +278,7 @@ class LaplacianEncoder {
     for (const int a : setup_.charts().anchors) {
       anchored[a] = true;
     }
-    int remaining = options_.extra_anchors;
+    int remaining = NumExtraAnchors();
     int round_size = 1;
     std::vector<double> error(n);
     while (remaining > 0) {
@@ -331,7 +344,7 @@ class LaplacianEncoder {
       }
     }
     std::mt19937 random(kRandomAnchorSeed);
-    const int count = std::min<int>(options_.extra_anchors, free.size());
+    const int count = std::min<int>(NumExtraAnchors(), free.size());
     for (int i = 0; i < count; ++i) {
       const int pick = i + static_cast<int>(random() % (free.size() - i));
       std::swap(free[i], free[pick]);
@@ -537,7 +550,8 @@ bool EncodeUvLaplacian(const UvLaplacianMesh &mesh, const UvValues &uv,
       options.step_bits > kUvLaplacianMaxStepBits ||
       options.frame_bits < options.step_bits ||
       options.frame_bits > kUvLaplacianMaxFrameBits ||
-      options.extra_anchors < 0) {
+      (options.extra_anchors < 0 &&
+       options.extra_anchors != kUvLaplacianDefaultExtraAnchors)) {
     return false;
   }
   std::vector<UvLaplacianKind> kinds = {options.kind};

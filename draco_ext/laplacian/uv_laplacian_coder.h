@@ -19,7 +19,8 @@
 //     mesh (uv_laplacian_operator.h), rows scaled to diagonal -1.
 //  2. Anchors: one or two per chart (uv_laplacian_operator.h: UvCharts) so
 //     that the system is regular, plus K chosen greedily by the largest
-//     reconstruction error (or at random, for the paper's fig. 9).
+//     reconstruction error (or at random, for the paper's fig. 9); K is
+//     given, or UvDefaultExtraAnchors() of the mesh.
 //  3. r = L u is quantised uniformly with the step 2^frame / 2^step_bits;
 //     residuals and anchors are entropy coded with Draco's rANS coder.
 //  4. The decoder solves the least-squares system of L and the anchor rows

@@ -14,6 +14,8 @@
 //
 #include "draco_ext/laplacian/uv_laplacian_settings.h"
 
+#include <algorithm>
+
 namespace draco {
 
 namespace {
@@ -26,6 +28,14 @@ constexpr char kSelectionOption[] = "draco_uv_laplacian_selection";
 constexpr char kQuantizationBitsOption[] = "quantization_bits";
 
 }  // namespace
+
+int UvDefaultExtraAnchors(int num_texture_vertices, int num_boundary_vertices) {
+  // ceil((0.65 n + 6 b) / 100) in integers: (13 n + 120 b) / 2000.
+  const int64_t weighted = 13 * int64_t{std::max(0, num_texture_vertices)} +
+                           120 * int64_t{std::max(0, num_boundary_vertices)};
+  return static_cast<int>(
+      std::min<int64_t>((weighted + 1999) / 2000, kUvLaplacianMaxExtraAnchors));
+}
 
 void SetUvLaplacianSettings(const UvLaplacianEncoderOptions &settings,
                             int att_id, EncoderOptions *options) {

@@ -35,7 +35,9 @@
 //                       coding of attribute seams (context: draco-uv's
 //                       context-modelled crease bits)
 //   -uv_anchors K|P%|random:K|random:P%
-//                       extra anchors of the Laplacian names (default 50)
+//                       extra anchors of the Laplacian names (default:
+//                       UvDefaultExtraAnchors(), 0.65 % of the texture
+//                       coordinates + 6 % of the boundary ones)
 //   -uv_rmse R          error target: per TEX_COORD attribute, the smallest
 //                       coding (scheme, -qt, anchors) whose decoded RMSE
 //                       (eq. 9, UV units) is at most R (uv_error_target.h)

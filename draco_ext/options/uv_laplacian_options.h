@@ -16,8 +16,9 @@
 // the lossy Laplacian scheme (eq. 6-8 of [Váša & Brunnett 2014]) for one
 // TEX_COORD attribute. -qt sets the quantisation step of its residuals,
 // range / (2^qt - 1); K extra anchors are chosen greedily by largest error
-// (default 50) or at random; P% sets K to P percent of the attribute's
-// texture coordinates. Called by ConfigureUvPrediction().
+// or at random; P% sets K to P percent of the attribute's texture
+// coordinates; without -uv_anchors the scheme's encoder takes
+// UvDefaultExtraAnchors() of the mesh. Called by ConfigureUvPrediction().
 #ifndef DRACO_EXT_OPTIONS_UV_LAPLACIAN_OPTIONS_H_
 #define DRACO_EXT_OPTIONS_UV_LAPLACIAN_OPTIONS_H_
 

@@ -154,6 +154,33 @@ TEST(UvLaplacianCoderTest, GreedyAnchorsLowerTheError) {
   }
 }
 
+TEST(UvLaplacianCoderTest, DefaultAnchorsFollowTheRule) {
+  std::vector<UvTestCase> cases = TestdataCases();
+  cases.push_back(ManyChartsCase(300, 20));
+  for (const UvTestCase &c : cases) {
+    std::vector<bool> boundary;
+    UvTextureGraph(c.mesh, &boundary);
+    const int rule = UvDefaultExtraAnchors(
+        c.mesh.num_vertices(),
+        static_cast<int>(std::count(boundary.begin(), boundary.end(), true)));
+    for (const UvLaplacianKind kind : kKinds) {
+      std::vector<char> by_default, by_rule, by_fifty;
+      ASSERT_EQ(RoundTrip(c, Options(kind, 10, kUvLaplacianDefaultExtraAnchors),
+                          &by_default)
+                    .rows(),
+                c.uv.rows())
+          << c.name;
+      ASSERT_EQ(RoundTrip(c, Options(kind, 10, rule), &by_rule).rows(),
+                c.uv.rows());
+      EXPECT_EQ(by_default, by_rule) << c.name << " " << rule;
+      if (rule != 50 && c.mesh.num_vertices() > 100) {
+        RoundTrip(c, Options(kind, 10, 50), &by_fifty);
+        EXPECT_NE(by_default, by_fifty) << c.name << " " << rule;
+      }
+    }
+  }
+}
+
 TEST(UvLaplacianCoderTest, RandomAnchorsAreDeterministic) {
   const UvTestCase c = TestdataCases().back();
   UvLaplacianEncoderOptions options = Options(UvLaplacianKind::kTutte, 8);
