@@ -43,7 +43,8 @@ struct Args {
 };
 
 void Usage() {
-  printf(
+  // fputs: the text has percent signs.
+  fputs(
       "Usage: draco_uv_eval <mesh or folder> [options]\n"
       "\n"
       "Encodes and decodes every mesh (OBJ, PLY, glTF, GLB) with each UV\n"
@@ -71,7 +72,8 @@ void Usage() {
       "  --csv FILE       one row per (mesh, scheme, qt)\n"
       "  --plot FILE      rate-distortion chart (PNG or SVG, needs python3 "
       "with matplotlib)\n"
-      "  --quiet          no progress on stderr\n");
+      "  --quiet          no progress on stderr\n",
+      stdout);
 }
 
 bool ParseArgs(int argc, char **argv, Args *args) {

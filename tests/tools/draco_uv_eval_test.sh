@@ -12,6 +12,7 @@
 #     those of draco_encoder -uv_seams context, and whose seam bytes differ
 #     from the stock rows' by what the files' sizes differ (within 2 bytes:
 #     stock seam bytes are counted on the position corner table).
+#  6. --help prints its text as written (percent signs included).
 #
 #   draco_uv_eval_test.sh UV_EVAL ENCODER DECODER MESH
 set -uo pipefail
@@ -119,6 +120,11 @@ if "${python}" -c "import matplotlib" 2>/dev/null; then
     --plot "${work}/rd.png" >/dev/null 2>&1 || fail "--plot failed"
   [[ -s "${work}/rd.png" ]] || fail "--plot wrote no chart"
 fi
+
+# 6. Help text.
+"${uv_eval}" --help >"${work}/help.txt" 2>&1
+grep -q "greedy, 0.65% of the" "${work}/help.txt" ||
+  fail "--help does not print the default anchors as written"
 
 echo "failures: ${failures}"
 [[ ${failures} -eq 0 ]]
