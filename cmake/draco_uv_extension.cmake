@@ -55,6 +55,8 @@ list(
          "${draco_uv_ext}/seams/uv_seam_edgebreaker_decoder.cc")
 list(
   APPEND draco_compression_entropy_sources
+         "${draco_uv_ext}/common/rans_token_table.cc"
+         "${draco_uv_ext}/common/rans_token_table.h"
          "${draco_uv_ext}/common/uv_residual_coder.cc"
          "${draco_uv_ext}/common/uv_residual_coder.h"
          "${draco_uv_ext}/seams/uv_seam_coder.cc"
