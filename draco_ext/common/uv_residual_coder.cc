@@ -15,11 +15,10 @@
 #include "draco_ext/common/uv_residual_coder.h"
 
 #include "draco/compression/bit_coders/direct_bit_encoder.h"
-#include "draco/compression/entropy/symbol_decoding.h"
-#include "draco/compression/entropy/symbol_encoding.h"
 #include "draco/core/bit_utils.h"
 #include "draco/core/varint_decoding.h"
 #include "draco/core/varint_encoding.h"
+#include "draco_ext/common/rans_token_table.h"
 
 namespace draco {
 
@@ -29,6 +28,43 @@ constexpr int kFirstSplitBits = 4;  // bitlen(z) - 1 of the first split token.
 // z < 2^32: n <= 31, so tokens stay below 16 + 2 * 28.
 constexpr uint32_t kNumTokens =
     kUvResidualDirectTokens + 2 * (32 - kFirstSplitBits);
+static_assert(kNumTokens <= kMaxRansTokens, "tokens fit the table");
+
+// The fixed cost of a table in 1/65536 bits: its token count, rANS length
+// and rANS final state, about 6 bytes; an empty table costs its count.
+constexpr uint64_t kTableOverheadInBitUnits = uint64_t{48} << 16;
+constexpr uint64_t kEmptyTableInBitUnits = uint64_t{8} << 16;
+
+typedef std::vector<uint32_t> Histogram;
+
+Histogram Merged(const Histogram &a, const Histogram &b) {
+  Histogram sum(a);
+  for (size_t i = 0; i < b.size(); ++i) {
+    sum[i] += b[i];
+  }
+  return sum;
+}
+
+// What one table of |histogram| costs, in 1/65536 bits.
+uint64_t CostOfTable(const Histogram &histogram) {
+  RansTokenTable table;
+  if (!table.InitFromCounts(histogram)) {
+    return kEmptyTableInBitUnits;
+  }
+  return kTableOverheadInBitUnits + table.CostInBitUnits(histogram);
+}
+
+// The table of each context under |table_starts|.
+std::array<uint8_t, kUvResidualNumContexts> TablesOfContexts(
+    uint16_t table_starts) {
+  std::array<uint8_t, kUvResidualNumContexts> table_of;
+  int table = 0;
+  for (int c = 0; c < kUvResidualNumContexts; ++c) {
+    table += (table_starts >> c) & 1;
+    table_of[c] = static_cast<uint8_t>(table);
+  }
+  return table_of;
+}
 
 }  // namespace
 
@@ -52,24 +88,94 @@ void UvResidualEncoder::Add(int context, int32_t residual) {
   symbols_.push_back(symbol);
 }
 
-bool UvResidualEncoder::Encode(bool use_contexts, EncoderBuffer *buffer) const {
-  const int num_contexts = use_contexts ? kUvResidualNumContexts : 1;
-  std::vector<std::vector<uint32_t>> tokens(num_contexts);
+
+uint16_t UvResidualEncoder::ChooseTableStarts() const {
+  // Runs of neighbouring contexts: first context, histogram, cost.
+  struct Run {
+    int first;
+    Histogram histogram;
+    uint64_t cost;
+  };
+  std::vector<Run> runs(kUvResidualNumContexts);
+  for (int c = 0; c < kUvResidualNumContexts; ++c) {
+    runs[c] = {c, Histogram(kNumTokens, 0), 0};
+  }
+  for (const Symbol &symbol : symbols_) {
+    ++runs[symbol.context].histogram[symbol.token];
+  }
+  for (Run &run : runs) {
+    run.cost = CostOfTable(run.histogram);
+  }
+  // Merge the neighbours whose merge saves most until none saves.
+  while (runs.size() > 1) {
+    size_t best = 0;
+    uint64_t best_saving = 0;
+    Histogram best_histogram;
+    for (size_t i = 0; i + 1 < runs.size(); ++i) {
+      Histogram merged = Merged(runs[i].histogram, runs[i + 1].histogram);
+      const uint64_t cost = CostOfTable(merged);
+      const uint64_t separate = runs[i].cost + runs[i + 1].cost;
+      if (cost < separate && separate - cost > best_saving) {
+        best_saving = separate - cost;
+        best = i;
+        best_histogram.swap(merged);
+      }
+    }
+    if (best_saving == 0) {
+      break;
+    }
+    runs[best].histogram.swap(best_histogram);
+    runs[best].cost = CostOfTable(runs[best].histogram);
+    runs.erase(runs.begin() + best + 1);
+  }
+  uint16_t table_starts = 0;
+  for (size_t i = 1; i < runs.size(); ++i) {
+    table_starts |= static_cast<uint16_t>(1u << runs[i].first);
+  }
+  return table_starts;
+}
+
+bool UvResidualEncoder::Encode(EncoderBuffer *buffer) const {
+  return Encode(ChooseTableStarts(), buffer);
+}
+
+bool UvResidualEncoder::Encode(uint16_t table_starts,
+                               EncoderBuffer *buffer) const {
+  if ((table_starts & ~kUvResidualAllTables) != 0) {
+    return false;
+  }
+  const std::array<uint8_t, kUvResidualNumContexts> table_of =
+      TablesOfContexts(table_starts);
+  const int num_tables = table_of.back() + 1;
+  std::vector<std::vector<uint32_t>> tokens(num_tables);
+  std::vector<Histogram> histograms(num_tables, Histogram(kNumTokens, 0));
   DirectBitEncoder raw_bits;
   raw_bits.StartEncoding();
   for (const Symbol &symbol : symbols_) {
-    tokens[use_contexts ? symbol.context : 0].push_back(symbol.token);
+    const int table = table_of[symbol.context];
+    tokens[table].push_back(symbol.token);
+    ++histograms[table][symbol.token];
     if (symbol.num_raw_bits > 0) {
       raw_bits.EncodeLeastSignificantBits32(symbol.num_raw_bits,
                                             symbol.raw_bits);
     }
   }
-  buffer->Encode(static_cast<uint8_t>(use_contexts));
-  for (const std::vector<uint32_t> &group : tokens) {
-    EncodeVarint(static_cast<uint32_t>(group.size()), buffer);
-    if (!group.empty() &&
-        !EncodeSymbols(group.data(), static_cast<int>(group.size()), 1,
-                       nullptr, buffer)) {
+  buffer->Encode(table_starts);
+  std::vector<RansTokenTable> tables(num_tables);
+  BitWriter table_bits;
+  for (int t = 0; t < num_tables; ++t) {
+    EncodeVarint(static_cast<uint32_t>(tokens[t].size()), buffer);
+    if (!tokens[t].empty()) {
+      if (!tables[t].InitFromCounts(histograms[t])) {
+        return false;
+      }
+      tables[t].Write(&table_bits);
+    }
+  }
+  EncodeVarint(static_cast<uint32_t>(table_bits.bytes().size()), buffer);
+  buffer->Encode(table_bits.bytes().data(), table_bits.bytes().size());
+  for (int t = 0; t < num_tables; ++t) {
+    if (!tokens[t].empty() && !EncodeRansTokens(tables[t], tokens[t], buffer)) {
       return false;
     }
   }
@@ -78,29 +184,51 @@ bool UvResidualEncoder::Encode(bool use_contexts, EncoderBuffer *buffer) const {
 }
 
 bool UvResidualDecoder::Decode(int count, DecoderBuffer *buffer) {
-  uint8_t use_contexts;
-  if (count < 0 || !buffer->Decode(&use_contexts) || use_contexts > 1) {
+  uint16_t table_starts;
+  if (count < 0 || !buffer->Decode(&table_starts) ||
+      (table_starts & ~kUvResidualAllTables) != 0) {
     return false;
   }
-  use_contexts_ = use_contexts == 1;
-  const int num_contexts = use_contexts_ ? kUvResidualNumContexts : 1;
+  table_of_ = TablesOfContexts(table_starts);
+  const int num_tables = table_of_.back() + 1;
+  std::array<uint32_t, kUvResidualNumContexts> counts = {};
   int64_t total = 0;
-  for (int i = 0; i < kUvResidualNumContexts; ++i) {
-    tokens_[i].clear();
-    next_[i] = 0;
-  }
-  for (int i = 0; i < num_contexts; ++i) {
-    uint32_t group_size;
-    if (!DecodeVarint(&group_size, buffer) || group_size > count - total) {
+  for (int t = 0; t < num_tables; ++t) {
+    if (!DecodeVarint(&counts[t], buffer) || counts[t] > count - total) {
       return false;
     }
-    total += group_size;
-    tokens_[i].resize(group_size);
-    if (!DecodeSymbols(group_size, 1, buffer, tokens_[i].data())) {
+    total += counts[t];
+  }
+  return total == count && DecodeTables(counts, num_tables, buffer) &&
+         raw_bits_.StartDecoding(buffer);
+}
+
+bool UvResidualDecoder::DecodeTables(
+    const std::array<uint32_t, kUvResidualNumContexts> &counts, int num_tables,
+    DecoderBuffer *buffer) {
+  uint32_t table_bytes;
+  if (!DecodeVarint(&table_bytes, buffer) ||
+      table_bytes > static_cast<uint64_t>(buffer->remaining_size())) {
+    return false;
+  }
+  BitReader reader(reinterpret_cast<const uint8_t *>(buffer->data_head()),
+                   table_bytes);
+  std::array<RansTokenTable, kUvResidualNumContexts> tables;
+  for (int t = 0; t < num_tables; ++t) {
+    if (counts[t] > 0 && !tables[t].Read(&reader)) {
       return false;
     }
   }
-  return total == count && raw_bits_.StartDecoding(buffer);
+  buffer->Advance(table_bytes);
+  for (int t = 0; t < kUvResidualNumContexts; ++t) {
+    next_[t] = 0;
+    tokens_[t].clear();
+    if (t < num_tables && counts[t] > 0 &&
+        !DecodeRansTokens(tables[t], counts[t], buffer, &tokens_[t])) {
+      return false;
+    }
+  }
+  return true;
 }
 
 bool UvResidualDecoder::DecodeSplitToken(uint32_t token, int32_t *residual) {

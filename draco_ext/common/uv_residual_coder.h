@@ -22,14 +22,20 @@
 //   z >= 16   n = bitlen(z) - 1, token = 16 + 2 (n - 4) + bit (n - 1) of z,
 //             followed by the n - 1 lowest bits of z, raw.
 // Tokens are grouped by a context the predictor derives from data the
-// decoder already has; every group is coded with Draco's static rANS symbol
-// coder (EncodeSymbols). A small alphabet keeps the per-context probability
-// tables cheap, which is what makes contexts pay (full-alphabet tables eat
-// the gain). Raw bits go through one DirectBitEncoder.
+// decoder already has. The encoder merges runs of neighbouring contexts
+// into one table where a table costs more than it saves (greedily, by an
+// integer estimate of the tables' and tokens' bits), and codes each table's
+// tokens with rANS (Draco's ans.h) at 12-bit precision
+// (rans_token_table.h). On the corpus's meshes a table takes about 6 bits
+// per distinct token; Draco's EncodeSymbols() took 15-18, 13-18 % of the UV
+// bytes of small meshes with per-context tables. Raw bits go through one
+// DirectBitEncoder.
 //
-// Stream: uint8 use_contexts; per context (9, or 1 without contexts) a
-// varint token count and, if non-zero, the EncodeSymbols() data; then the
-// raw bits.
+// Stream: uint16 table starts (bit c set: context c starts a new table;
+// bit 0 and bits from kUvResidualNumContexts on are 0); per table a varint
+// token count; a varint byte length and the bit-packed tables of the
+// non-empty ones; per non-empty table a varint byte length and its rANS
+// data; then the raw bits.
 #ifndef DRACO_EXT_COMMON_UV_RESIDUAL_CODER_H_
 #define DRACO_EXT_COMMON_UV_RESIDUAL_CODER_H_
 
@@ -44,7 +50,17 @@
 
 namespace draco {
 
-constexpr int kUvResidualNumContexts = 9;
+// Contexts 0-7: the bit length of the neighbours' residuals (capped);
+// kUvResidualNoNeighbourContext and kUvResidualNoStencilContext below.
+constexpr int kUvResidualNumContexts = 10;
+// A texture coordinate without decoded neighbours: the first of its chart.
+constexpr int kUvResidualNoNeighbourContext = 8;
+// A texture coordinate with decoded neighbours but no stencil to predict
+// from: mostly the second of its chart, whose residual is a UV edge.
+constexpr int kUvResidualNoStencilContext = 9;
+// Every context in its own table.
+constexpr uint16_t kUvResidualAllTables =
+    ((1u << kUvResidualNumContexts) - 1) & ~1u;
 // Tokens below this are residuals' zig-zag values themselves.
 constexpr uint32_t kUvResidualDirectTokens = 16;
 
@@ -54,8 +70,10 @@ class UvResidualEncoder {
   void Reset(int expected);
   // Appends a residual in decoding order; |context| < kUvResidualNumContexts.
   void Add(int context, int32_t residual);
-  // Writes all residuals, with one table per context or a single table.
-  bool Encode(bool use_contexts, EncoderBuffer *buffer) const;
+  // Writes all residuals with the table starts that make them smallest.
+  bool Encode(EncoderBuffer *buffer) const;
+  // Writes all residuals with the given table starts (see the stream).
+  bool Encode(uint16_t table_starts, EncoderBuffer *buffer) const;
 
  private:
   struct Symbol {
@@ -64,6 +82,8 @@ class UvResidualEncoder {
     uint8_t num_raw_bits;
     uint32_t raw_bits;
   };
+  // The table starts Encode() writes: greedy merges of neighbouring tables.
+  uint16_t ChooseTableStarts() const;
   std::vector<Symbol> symbols_;
 };
 
@@ -77,9 +97,11 @@ class UvResidualDecoder {
   // Inline: called twice per texture coordinate; the call alone cost
   // 0.4-0.6 % of a whole decode.
   bool Next(int context, int32_t *residual) {
-    const int group = use_contexts_ ? context : 0;
-    if (group < 0 || group >= kUvResidualNumContexts ||
-        next_[group] >= tokens_[group].size()) {
+    if (context < 0 || context >= kUvResidualNumContexts) {
+      return false;
+    }
+    const int group = table_of_[context];
+    if (next_[group] >= tokens_[group].size()) {
       return false;
     }
     const uint32_t token = tokens_[group][next_[group]++];
@@ -94,7 +116,11 @@ class UvResidualDecoder {
   // The residual of a token >= kUvResidualDirectTokens and its raw bits.
   bool DecodeSplitToken(uint32_t token, int32_t *residual);
 
-  bool use_contexts_ = false;
+  // Reads the tables and tokens of the |counts| after the table starts.
+  bool DecodeTables(const std::array<uint32_t, kUvResidualNumContexts> &counts,
+                    int num_tables, DecoderBuffer *buffer);
+
+  std::array<uint8_t, kUvResidualNumContexts> table_of_ = {};
   std::array<std::vector<uint32_t>, kUvResidualNumContexts> tokens_;
   std::array<size_t, kUvResidualNumContexts> next_ = {};
   DirectBitDecoder raw_bits_;

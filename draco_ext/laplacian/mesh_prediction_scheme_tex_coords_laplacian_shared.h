@@ -29,7 +29,7 @@
 namespace draco {
 
 // Version of the scheme's prediction data; decoders reject other values.
-constexpr uint8_t kTexCoordsLaplacianFormatVersion = 3;
+constexpr uint8_t kTexCoordsLaplacianFormatVersion = 4;
 
 // The coder's view of one texture coordinate attribute: one texture vertex
 // per attribute entry, at the 3D position of the entry's point, and the

@@ -394,7 +394,10 @@ class LaplacianEncoder {
       }
       references.Record(i, value);
     }
-    EncodeSmaller(coder, buffer);
+    // Fails only on contexts or tokens the coder never receives.
+    const bool encoded = coder.Encode(buffer);
+    DRACO_DCHECK(encoded);
+    (void)encoded;
   }
 
   void WriteResiduals(EncoderBuffer *buffer) const {
@@ -407,20 +410,10 @@ class LaplacianEncoder {
         }
       }
     }
-    EncodeSmaller(coder, buffer);
-  }
-
-  // Writes |coder|'s residuals with or without contexts, whichever is
-  // smaller.
-  static void EncodeSmaller(const UvResidualEncoder &coder,
-                            EncoderBuffer *buffer) {
-    EncoderBuffer with_contexts, without_contexts;
-    coder.Encode(true, &with_contexts);
-    coder.Encode(false, &without_contexts);
-    const EncoderBuffer &smaller =
-        with_contexts.size() <= without_contexts.size() ? with_contexts
-                                                        : without_contexts;
-    buffer->Encode(smaller.data(), smaller.size());
+    // Fails only on contexts or tokens the coder never receives.
+    const bool encoded = coder.Encode(buffer);
+    DRACO_DCHECK(encoded);
+    (void)encoded;
   }
 
   const UvLaplacianMesh &mesh_;

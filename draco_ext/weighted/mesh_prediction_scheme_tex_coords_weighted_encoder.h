@@ -37,8 +37,7 @@ namespace draco {
 // predicted, the fallbacks and the weak cases).
 //
 // The encoder tries both processing orders (max prediction degree, Draco's
-// own), both predictor kinds and residual coding with and without contexts,
-// and keeps the smallest. It codes the corrections itself with
+// own) and both predictor kinds, and keeps the smallest. It codes the corrections itself with
 // UvResidualEncoder and hands Draco all-zero corrections, which Draco's
 // symbol coder stores in a few bytes.
 //
@@ -143,17 +142,14 @@ template <typename DataTypeT, class TransformT, class MeshDataT>
 bool MeshPredictionSchemeTexCoordsWeightedEncoder<
     DataTypeT, TransformT, MeshDataT>::KeepIfSmaller(const UvPredictionConfig
                                                          &config) {
-  for (const bool use_contexts : {true, false}) {
-    EncoderBuffer streams;
-    if (!residuals_.Encode(use_contexts, &streams)) {
-      return false;
-    }
-    if (!has_best_ || streams.size() < best_streams_.size()) {
-      best_streams_.assign(streams.data(), streams.data() + streams.size());
-      config_ = config;
-      config_.use_contexts = use_contexts;
-      has_best_ = true;
-    }
+  EncoderBuffer streams;
+  if (!residuals_.Encode(&streams)) {
+    return false;
+  }
+  if (!has_best_ || streams.size() < best_streams_.size()) {
+    best_streams_.assign(streams.data(), streams.data() + streams.size());
+    config_ = config;
+    has_best_ = true;
   }
   return true;
 }

@@ -81,7 +81,11 @@ struct UvComputedFrame {
 // kAgreementWeighted always takes the last one, kReachMean the first.
 //
 // Also provides the residual context: the bit length (capped at 7) of the
-// neighbours' mean residual magnitude, 8 without known neighbours.
+// neighbours' mean residual magnitude; kUvResidualNoNeighbourContext
+// without known neighbours (a chart's first vertex) and
+// kUvResidualNoStencilContext with neighbours but no stencil (mostly a
+// chart's second vertex, whose residual is a UV edge, not a prediction
+// error).
 //
 // Fallbacks: no stencil (the first two vertices of a chart, degenerate
 // fans): the latest known neighbour, else the previously processed entry,
@@ -508,8 +512,9 @@ int MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::ChooseCandidate()
 template <typename DataTypeT>
 void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::ComputeContext() {
   const int count = num_neighbours_;
-  if (count == 0) {
-    context_ = kUvResidualNumContexts - 1;
+  if (count == 0 || num_stencils_ == 0) {
+    context_ = count == 0 ? kUvResidualNoNeighbourContext
+                          : kUvResidualNoStencilContext;
     return;
   }
   int64_t sum = 0;
@@ -518,7 +523,7 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<DataTypeT>::ComputeContext()
   }
   const uint64_t mean =
       static_cast<uint64_t>(DivideBySmallCount(sum + count / 2, count));
-  context_ = std::min(kUvResidualNumContexts - 2, BitLength(mean));
+  context_ = std::min(kUvResidualNoNeighbourContext - 1, BitLength(mean));
 }
 
 template <typename DataTypeT>
@@ -569,14 +574,15 @@ void MeshPredictionSchemeTexCoordsWeightedPredictor<
       ++count;
     }
   }
-  if (count == 0) {
-    context_ = kUvResidualNumContexts - 1;
+  if (count == 0 || num_stencils_ == 0) {
+    context_ = count == 0 ? kUvResidualNoNeighbourContext
+                          : kUvResidualNoStencilContext;
     return;
   }
   // (sum + count / 2) / count with constant divisors.
   const uint64_t mean =
       count == 3 ? (sum + 1) / 3 : (count == 2 ? (sum + 1) / 2 : sum);
-  context_ = std::min(kUvResidualNumContexts - 2, BitLength(mean));
+  context_ = std::min(kUvResidualNoNeighbourContext - 1, BitLength(mean));
 }
 
 template <typename DataTypeT>

@@ -29,7 +29,7 @@ namespace draco {
 constexpr int kUvNumComponents = 2;
 
 // Version of the scheme's prediction data; decoders reject other values.
-constexpr uint8_t kTexCoordsWeightedFormatVersion = 2;
+constexpr uint8_t kTexCoordsWeightedFormatVersion = 3;
 
 // Which stencils a vertex uses and how their predictions become one.
 enum class UvPredictorKind : uint8_t {
@@ -61,7 +61,6 @@ inline bool UsesReachStencil(UvPredictorKind kind) {
 struct UvPredictionConfig {
   bool max_degree_order = true;  // Else Draco's own entry order.
   UvPredictorKind kind = UvPredictorKind::kAdaptive;
-  bool use_contexts = true;
 
   uint8_t ToByte() const {
     return static_cast<uint8_t>((max_degree_order ? 1 : 0) |

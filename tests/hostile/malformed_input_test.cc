@@ -38,6 +38,7 @@
 #include "draco/core/varint_encoding.h"
 #include "draco/io/file_utils.h"
 #include "draco_ext/common/uv_bitstream_guard.h"
+#include "draco_ext/common/uv_residual_coder.h"
 #include "gtest/gtest.h"
 #include "draco_ext/weighted/mesh_prediction_scheme_tex_coords_weighted_shared.h"
 #include "tests/draco_uv_test_utils.h"
@@ -192,14 +193,15 @@ TEST(MalformedInputTest, BitFlipsDecodeOrFailWithAMessage) {
 }
 
 // The fields after the guard: format version, configuration byte and the
-// residual coder's use_contexts byte; then the first token count (varint).
+// residual coder's table starts (uint16, little-endian); then the first
+// token count (varint).
 TEST(MalformedInputTest, UnknownHeaderValuesAreRejected) {
   const std::vector<GoldenFile> files = WeightedGoldenFiles();
   ASSERT_FALSE(files.empty());
   int tried = 0;
   for (const GoldenFile &file : files) {
     const int guard = GuardOffset(file.data);
-    const int version = guard + 8, config = guard + 9, contexts = guard + 10;
+    const int version = guard + 8, config = guard + 9, starts = guard + 10;
     const auto expect_rejected = [&](int offset, int value) {
       std::vector<char> data = file.data;
       data[offset] = static_cast<char>(value);
@@ -210,19 +212,22 @@ TEST(MalformedInputTest, UnknownHeaderValuesAreRejected) {
     for (int byte = 0; byte < 8; ++byte) {
       expect_rejected(guard + byte, file.data[guard + byte] ^ 0x10);
     }
-    for (const int value : {0, 1, 3, 255}) {
+    for (const int value : {0, 1, 2, 255}) {
       expect_rejected(version, value);
     }
     for (int value = 7; value < 256; ++value) {
       expect_rejected(config, value);
     }
-    for (int value = 2; value < 256; ++value) {
-      expect_rejected(contexts, value);
+    // Context 0 never starts a table; there are no contexts from 10 on.
+    expect_rejected(starts, file.data[starts] | 1);
+    for (int value = 1 << (kUvResidualNumContexts - 8); value < 256;
+         value <<= 1) {
+      expect_rejected(starts + 1, file.data[starts + 1] | value);
     }
     // A token count of 2^32 - 1, far above the number of residuals.
-    std::vector<char> huge(file.data.begin(), file.data.begin() + contexts + 1);
+    std::vector<char> huge(file.data.begin(), file.data.begin() + starts + 2);
     huge.insert(huge.end(), {'\xff', '\xff', '\xff', '\xff', '\x0f'});
-    huge.insert(huge.end(), file.data.begin() + contexts + 2, file.data.end());
+    huge.insert(huge.end(), file.data.begin() + starts + 3, file.data.end());
     EXPECT_FALSE(Decode(huge).ok()) << file.name << ": huge token count";
     ++tried;
   }

@@ -14,8 +14,8 @@
 //
 // The context-modelled residual coder of the draco-uv schemes
 // (uv_residual_coder.h): residual sequences of every context and magnitude
-// round-trip with and without per-context tables, and damaged streams are
-// refused with false.
+// round-trip with one table, one per context, mixes and the encoder's own
+// choice of tables, and damaged streams are refused with false.
 #include "draco_ext/common/uv_residual_coder.h"
 
 #include <cstdint>
@@ -82,14 +82,20 @@ Residuals BoundaryResiduals(int context) {
   return r;
 }
 
-std::vector<char> Encode(const Residuals &r, bool use_contexts) {
+// Table starts the tests encode with: one table, every context in its own,
+// a mix, and kChosen, the encoder's own choice.
+constexpr uint16_t kChosen = 0xffff;
+constexpr uint16_t kTableStarts[] = {0, kUvResidualAllTables, 0x254, kChosen};
+
+std::vector<char> Encode(const Residuals &r, uint16_t table_starts) {
   UvResidualEncoder encoder;
   encoder.Reset(r.size());
   for (int i = 0; i < r.size(); ++i) {
     encoder.Add(r.contexts[i], r.values[i]);
   }
   EncoderBuffer buffer;
-  EXPECT_TRUE(encoder.Encode(use_contexts, &buffer));
+  EXPECT_TRUE(table_starts == kChosen ? encoder.Encode(&buffer)
+                                      : encoder.Encode(table_starts, &buffer));
   return std::vector<char>(buffer.data(), buffer.data() + buffer.size());
 }
 
@@ -113,20 +119,20 @@ bool Decode(const std::vector<char> &bytes, int count, const Residuals &r,
   return true;
 }
 
-// True when |r| encoded with |use_contexts| decodes to itself.
-bool RoundTrips(const Residuals &r, bool use_contexts) {
+// True when |r| encoded with |table_starts| decodes to itself.
+bool RoundTrips(const Residuals &r, uint16_t table_starts) {
   UvResidualDecoder decoder;
   std::vector<int32_t> values;
-  return Decode(Encode(r, use_contexts), r.size(), r, &decoder, &values) &&
+  return Decode(Encode(r, table_starts), r.size(), r, &decoder, &values) &&
          values == r.values;
 }
 
-TEST(UvResidualCoderTest, RoundTripsRandomSequencesWithAndWithoutContexts) {
+TEST(UvResidualCoderTest, RoundTripsRandomSequencesWithEveryTableLayout) {
   for (uint32_t seed = 0; seed < 200; ++seed) {
     const Residuals r = RandomResiduals(1 + 37 * seed, seed);
-    for (const bool use_contexts : {false, true}) {
-      EXPECT_TRUE(RoundTrips(r, use_contexts))
-          << "seed " << seed << " contexts " << use_contexts;
+    for (const uint16_t table_starts : kTableStarts) {
+      EXPECT_TRUE(RoundTrips(r, table_starts))
+          << "seed " << seed << " contexts " << table_starts;
     }
   }
 }
@@ -134,9 +140,9 @@ TEST(UvResidualCoderTest, RoundTripsRandomSequencesWithAndWithoutContexts) {
 TEST(UvResidualCoderTest,
      RoundTripsTokenBoundariesAndInt32LimitsInEveryContext) {
   for (int context = 0; context < kUvResidualNumContexts; ++context) {
-    for (const bool use_contexts : {false, true}) {
-      EXPECT_TRUE(RoundTrips(BoundaryResiduals(context), use_contexts))
-          << "context " << context << " contexts " << use_contexts;
+    for (const uint16_t table_starts : kTableStarts) {
+      EXPECT_TRUE(RoundTrips(BoundaryResiduals(context), table_starts))
+          << "context " << context << " contexts " << table_starts;
     }
   }
 }
@@ -154,20 +160,20 @@ TEST(UvResidualCoderTest, RoundTripsMixedMagnitudesAndUnusedContexts) {
       r.Add(context, i % 2 ? static_cast<int32_t>(random() % 7) - 3
                            : RandomResidual(&random));
     }
-    for (const bool use_contexts : {false, true}) {
-      EXPECT_TRUE(RoundTrips(r, use_contexts)) << "trial " << trial;
+    for (const uint16_t table_starts : kTableStarts) {
+      EXPECT_TRUE(RoundTrips(r, table_starts)) << "trial " << trial;
     }
   }
 }
 
 TEST(UvResidualCoderTest, EmptySequenceRoundTripsAndHasNoResidualToGive) {
-  for (const bool use_contexts : {false, true}) {
-    const std::vector<char> bytes = Encode(Residuals(), use_contexts);
+  for (const uint16_t table_starts : kTableStarts) {
+    const std::vector<char> bytes = Encode(Residuals(), table_starts);
     DecoderBuffer buffer;
     buffer.Init(bytes.data(), bytes.size(), kDracoMeshBitstreamVersion);
     UvResidualDecoder decoder;
-    ASSERT_TRUE(decoder.Decode(0, &buffer)) << use_contexts;
-    EXPECT_EQ(buffer.remaining_size(), 0) << use_contexts;
+    ASSERT_TRUE(decoder.Decode(0, &buffer)) << table_starts;
+    EXPECT_EQ(buffer.remaining_size(), 0) << table_starts;
     int32_t value;
     for (int context = 0; context < kUvResidualNumContexts; ++context) {
       EXPECT_FALSE(decoder.Next(context, &value)) << context;
@@ -180,8 +186,8 @@ TEST(UvResidualCoderTest, EmptySequenceRoundTripsAndHasNoResidualToGive) {
 TEST(UvResidualCoderTest, DecodeConsumesExactlyTheEncodedBytes) {
   for (uint32_t seed = 0; seed < 20; ++seed) {
     const Residuals r = RandomResiduals(100 * seed, seed);
-    for (const bool use_contexts : {false, true}) {
-      std::vector<char> bytes = Encode(r, use_contexts);
+    for (const uint16_t table_starts : kTableStarts) {
+      std::vector<char> bytes = Encode(r, table_starts);
       const size_t size = bytes.size();
       bytes.insert(bytes.end(), {'t', 'a', 'i', 'l'});
       DecoderBuffer buffer;
@@ -197,11 +203,11 @@ TEST(UvResidualCoderTest, DecodeConsumesExactlyTheEncodedBytes) {
 TEST(UvResidualCoderTest, NextFailsOnceAContextIsExhausted) {
   for (uint32_t seed = 0; seed < 30; ++seed) {
     const Residuals r = RandomResiduals(50 + seed, seed);
-    for (const bool use_contexts : {false, true}) {
+    for (const uint16_t table_starts : kTableStarts) {
       UvResidualDecoder decoder;
       std::vector<int32_t> values;
       ASSERT_TRUE(
-          Decode(Encode(r, use_contexts), r.size(), r, &decoder, &values));
+          Decode(Encode(r, table_starts), r.size(), r, &decoder, &values));
       int32_t value;
       for (int context = 0; context < kUvResidualNumContexts; ++context) {
         EXPECT_FALSE(decoder.Next(context, &value))
@@ -213,7 +219,7 @@ TEST(UvResidualCoderTest, NextFailsOnceAContextIsExhausted) {
 
 TEST(UvResidualCoderTest, NextRejectsContextsOutsideTheTables) {
   const Residuals r = RandomResiduals(100, 1);
-  const std::vector<char> bytes = Encode(r, true);
+  const std::vector<char> bytes = Encode(r, kChosen);
   DecoderBuffer buffer;
   buffer.Init(bytes.data(), bytes.size(), kDracoMeshBitstreamVersion);
   UvResidualDecoder decoder;
@@ -227,8 +233,8 @@ TEST(UvResidualCoderTest, NextRejectsContextsOutsideTheTables) {
 TEST(UvResidualCoderTest, DecodeRejectsAnyOtherCount) {
   for (uint32_t seed = 0; seed < 20; ++seed) {
     const Residuals r = RandomResiduals(10 * seed, seed);
-    for (const bool use_contexts : {false, true}) {
-      const std::vector<char> bytes = Encode(r, use_contexts);
+    for (const uint16_t table_starts : kTableStarts) {
+      const std::vector<char> bytes = Encode(r, table_starts);
       for (const int count : {r.size() - 1, r.size() + 1, -1}) {
         DecoderBuffer buffer;
         buffer.Init(bytes.data(), bytes.size(), kDracoMeshBitstreamVersion);
@@ -243,8 +249,8 @@ TEST(UvResidualCoderTest, DecodeRejectsAnyOtherCount) {
 TEST(UvResidualCoderTest, DecodeRejectsEveryTruncation) {
   for (uint32_t seed = 0; seed < 12; ++seed) {
     const Residuals r = RandomResiduals(20 * seed, seed);
-    for (const bool use_contexts : {false, true}) {
-      const std::vector<char> bytes = Encode(r, use_contexts);
+    for (const uint16_t table_starts : kTableStarts) {
+      const std::vector<char> bytes = Encode(r, table_starts);
       for (size_t size = 0; size < bytes.size(); ++size) {
         DecoderBuffer buffer;
         buffer.Init(bytes.data(), size, kDracoMeshBitstreamVersion);
@@ -256,16 +262,43 @@ TEST(UvResidualCoderTest, DecodeRejectsEveryTruncation) {
   }
 }
 
-// The stream starts with use_contexts, 0 or 1.
-TEST(UvResidualCoderTest, DecodeRejectsAnInvalidContextFlag) {
+// The stream starts with the table starts, a uint16 in which only the bits
+// of contexts 1 .. kUvResidualNumContexts - 1 may be set.
+TEST(UvResidualCoderTest, DecodeRejectsInvalidTableStarts) {
   const Residuals r = RandomResiduals(200, 2);
-  std::vector<char> bytes = Encode(r, true);
-  for (int flag = 2; flag < 256; ++flag) {
-    bytes[0] = static_cast<char>(flag);
+  std::vector<char> bytes = Encode(r, kChosen);
+  int rejected = 0;
+  for (uint32_t starts = 0; starts < 0x10000; ++starts) {
+    if ((starts & ~uint32_t{kUvResidualAllTables}) == 0) {
+      continue;
+    }
+    bytes[0] = static_cast<char>(starts & 0xff);
+    bytes[1] = static_cast<char>(starts >> 8);
     DecoderBuffer buffer;
     buffer.Init(bytes.data(), bytes.size(), kDracoMeshBitstreamVersion);
     UvResidualDecoder decoder;
-    EXPECT_FALSE(decoder.Decode(r.size(), &buffer)) << flag;
+    rejected += !decoder.Decode(r.size(), &buffer);
+  }
+  EXPECT_EQ(rejected, 0x10000 - (1 << (kUvResidualNumContexts - 1)));
+}
+
+// The encoder's choice of tables is never bigger than one table or one per
+// context, and merges contexts whose residuals are alike.
+TEST(UvResidualCoderTest, ChosenTablesAreNoBiggerThanOneOrAllTables) {
+  for (uint32_t seed = 0; seed < 30; ++seed) {
+    std::mt19937 random(seed);
+    Residuals r;
+    const int count = 100 + 1000 * (seed % 10);
+    for (int i = 0; i < count; ++i) {
+      // Contexts in pairs of alike residuals; the pairs differ.
+      const int context = static_cast<int>(random() % kUvResidualNumContexts);
+      const int32_t bound = int32_t{1} << (context / 2 * (seed % 3 + 1));
+      r.Add(context, static_cast<int32_t>(random() % (2 * bound)) - bound);
+    }
+    const size_t chosen = Encode(r, kChosen).size();
+    EXPECT_LE(chosen, Encode(r, 0).size()) << seed;
+    EXPECT_LE(chosen, Encode(r, kUvResidualAllTables).size()) << seed;
+    EXPECT_TRUE(RoundTrips(r, kChosen)) << seed;
   }
 }
 
@@ -278,8 +311,8 @@ TEST(UvResidualCoderTest, CorruptStreamsFailOrDecodeWithoutCrashing) {
   int rejected = 0, trials = 0;
   for (uint32_t seed = 0; seed < 20; ++seed) {
     const Residuals r = RandomResiduals(300, 1000 + seed);
-    for (const bool use_contexts : {false, true}) {
-      const std::vector<char> bytes = Encode(r, use_contexts);
+    for (const uint16_t table_starts : kTableStarts) {
+      const std::vector<char> bytes = Encode(r, table_starts);
       for (int trial = 0; trial < 100; ++trial, ++trials) {
         std::vector<char> corrupt = bytes;
         for (int flips = 1 + trial % 3; flips > 0; --flips) {
@@ -307,8 +340,8 @@ TEST(UvResidualCoderTest, ContextsCodeSmallerWhenTheirDistributionsDiffer) {
       const int32_t bound = int32_t{1} << context;
       r.Add(context, static_cast<int32_t>(random() % (2 * bound)) - bound);
     }
-    EXPECT_LT(Encode(r, true).size(), Encode(r, false).size()) << seed;
-    EXPECT_TRUE(RoundTrips(r, true)) << seed;
+    EXPECT_LT(Encode(r, kUvResidualAllTables).size(), Encode(r, 0).size()) << seed;
+    EXPECT_TRUE(RoundTrips(r, kUvResidualAllTables)) << seed;
   }
 }
 
@@ -324,11 +357,12 @@ TEST(UvResidualCoderTest, ResetDropsEarlierResiduals) {
     for (int i = 0; i < r.size(); ++i) {
       encoder.Add(r.contexts[i], r.values[i]);
     }
-    for (const bool use_contexts : {false, true}) {
+    for (const uint16_t table_starts : kTableStarts) {
       EncoderBuffer buffer;
-      ASSERT_TRUE(encoder.Encode(use_contexts, &buffer));
+      ASSERT_TRUE(table_starts == kChosen ? encoder.Encode(&buffer)
+                                         : encoder.Encode(table_starts, &buffer));
       EXPECT_EQ(std::vector<char>(buffer.data(), buffer.data() + buffer.size()),
-                Encode(r, use_contexts))
+                Encode(r, table_starts))
           << seed;
     }
   }
@@ -341,8 +375,8 @@ TEST(UvResidualCoderTest, DecoderStartsAfreshOnEveryStream) {
   std::vector<int32_t> values;
   for (uint32_t seed = 0; seed < 40; ++seed) {
     const Residuals r = RandomResiduals(1 + 13 * seed, seed);
-    const bool use_contexts = seed % 2 == 1;
-    const std::vector<char> bytes = Encode(r, use_contexts);
+    const uint16_t table_starts = kTableStarts[seed % 4];
+    const std::vector<char> bytes = Encode(r, table_starts);
     if (seed % 5 == 0) {
       EXPECT_FALSE(Decode(bytes, r.size() + 1, r, &decoder, &values));
     }

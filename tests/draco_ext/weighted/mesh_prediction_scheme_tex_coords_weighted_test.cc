@@ -199,7 +199,7 @@ TEST(MeshPredictionSchemeTexCoordsWeightedTest,
         });
     WeightedPredictionHarness harness(*mesh);
     const std::vector<int32_t> residuals =
-        harness.Residuals({true, UvPredictorKind::kAdaptive, true});
+        harness.Residuals({true, UvPredictorKind::kAdaptive});
     const int num_vertices = static_cast<int>(residuals.size()) / 2;
     EXPECT_LE(CountNonZero(residuals), 12) << "trial " << trial << " of "
                                            << num_vertices << " vertices";
@@ -222,7 +222,7 @@ TEST(MeshPredictionSchemeTexCoordsWeightedTest,
        {UvPredictorKind::kAdaptive, UvPredictorKind::kAgreementWeighted,
         UvPredictorKind::kReachAdaptive, UvPredictorKind::kReachMean}) {
     const bool max_degree_order = !UsesReachStencil(kind);
-    EXPECT_LE(CountNonZero(harness.Residuals({max_degree_order, kind, true})),
+    EXPECT_LE(CountNonZero(harness.Residuals({max_degree_order, kind})),
               4)
         << static_cast<int>(kind);
   }
@@ -262,7 +262,7 @@ TEST(MeshPredictionSchemeTexCoordsWeightedTest,
     for (const UvPredictorKind kind :
          {UvPredictorKind::kAdaptive, UvPredictorKind::kAgreementWeighted,
           UvPredictorKind::kReachAdaptive, UvPredictorKind::kReachMean}) {
-      const UvPredictionConfig config{!UsesReachStencil(kind), kind, true};
+      const UvPredictionConfig config{!UsesReachStencil(kind), kind};
       const std::vector<int32_t> one_thread = harness.Residuals(config, 1);
       EXPECT_GT(CountNonZero(one_thread), 0);
       EXPECT_EQ(harness.Residuals(config, 2), one_thread)
