@@ -27,8 +27,9 @@
 // level, 0 for absent tokens); consecutive levels differ little, so their
 // differences are Rice coded: about 5 bits per token of the alphabet, 6 per
 // distinct token, on the texture coordinate residuals of the corpus, against
-// 15-18 for Draco's EncodeSymbols() tables. Rounding the counts costs at
-// most 0.2 % of the token bits (a count off by at most 2^(1/8)). The
+// 15-18 for Draco's EncodeSymbols() tables. Rounding the counts (each off
+// by at most a factor 2^(1/8)) costs at most about 0.005 bits per token,
+// plus the 12-bit precision's rounding of rare tokens. The
 // probabilities follow from the levels with integer arithmetic only, so
 // encoder and decoder agree on every platform.
 //
