@@ -140,20 +140,20 @@ bool RansTokenTable::InitFromCounts(const std::vector<uint32_t> &counts) {
   return ComputeProbabilities();
 }
 
+uint64_t RansTokenTable::LevelBits(int k) const {
+  uint64_t bits = 0;
+  int previous = 0;
+  for (const uint8_t level : levels_) {
+    bits += (ZigZag(level - previous) >> k) + 1 + k;
+    previous = level;
+  }
+  return bits;
+}
+
 int RansTokenTable::BestRiceParameter() const {
   int best = 0;
-  uint64_t best_bits = std::numeric_limits<uint64_t>::max();
-  for (int k = 0; k <= kMaxRiceParameter; ++k) {
-    uint64_t bits = 0;
-    int previous = 0;
-    for (const uint8_t level : levels_) {
-      bits += (ZigZag(level - previous) >> k) + 1 + k;
-      previous = level;
-    }
-    if (bits < best_bits) {
-      best_bits = bits;
-      best = k;
-    }
+  for (int k = 1; k <= kMaxRiceParameter; ++k) {
+    best = LevelBits(k) < LevelBits(best) ? k : best;
   }
   return best;
 }
@@ -233,9 +233,8 @@ bool RansTokenTable::ComputeProbabilities() {
 
 uint64_t RansTokenTable::CostInBitUnits(
     const std::vector<uint32_t> &counts) const {
-  BitWriter writer;
-  Write(&writer);
-  uint64_t cost = kBitUnit * writer.bytes().size() * 8;
+  uint64_t cost = kBitUnit * (kTableSizeBits + kRiceParameterBits +
+                              LevelBits(BestRiceParameter()));
   const uint64_t full = FixedLog2(kPrecision);
   for (size_t i = 0; i < counts.size(); ++i) {
     if (counts[i] != 0) {

@@ -53,6 +53,8 @@ constexpr int kMaxRansTokens = 128;
 constexpr int kRansTokenPrecisionBits = 12;
 
 // Bits appended least significant first; the last byte is zero-padded.
+// (Draco's DirectBitEncoder pads to 32-bit words behind a 4-byte size, more
+// than a few tables take.)
 class BitWriter {
  public:
   void Put(uint32_t value, int num_bits);
@@ -97,6 +99,8 @@ class RansTokenTable {
   uint64_t CostInBitUnits(const std::vector<uint32_t> &counts) const;
 
  private:
+  // The bits of the levels Rice coded with parameter |k|.
+  uint64_t LevelBits(int k) const;
   int BestRiceParameter() const;
   bool ComputeProbabilities();
 

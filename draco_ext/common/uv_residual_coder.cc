@@ -88,7 +88,6 @@ void UvResidualEncoder::Add(int context, int32_t residual) {
   symbols_.push_back(symbol);
 }
 
-
 uint16_t UvResidualEncoder::ChooseTableStarts() const {
   // Runs of neighbouring contexts: first context, histogram, cost.
   struct Run {
@@ -109,7 +108,7 @@ uint16_t UvResidualEncoder::ChooseTableStarts() const {
   // Merge the neighbours whose merge saves most until none saves.
   while (runs.size() > 1) {
     size_t best = 0;
-    uint64_t best_saving = 0;
+    uint64_t best_saving = 0, best_cost = 0;
     Histogram best_histogram;
     for (size_t i = 0; i + 1 < runs.size(); ++i) {
       Histogram merged = Merged(runs[i].histogram, runs[i + 1].histogram);
@@ -117,6 +116,7 @@ uint16_t UvResidualEncoder::ChooseTableStarts() const {
       const uint64_t separate = runs[i].cost + runs[i + 1].cost;
       if (cost < separate && separate - cost > best_saving) {
         best_saving = separate - cost;
+        best_cost = cost;
         best = i;
         best_histogram.swap(merged);
       }
@@ -125,7 +125,7 @@ uint16_t UvResidualEncoder::ChooseTableStarts() const {
       break;
     }
     runs[best].histogram.swap(best_histogram);
-    runs[best].cost = CostOfTable(runs[best].histogram);
+    runs[best].cost = best_cost;
     runs.erase(runs.begin() + best + 1);
   }
   uint16_t table_starts = 0;

@@ -211,8 +211,7 @@ class LaplacianEncoder {
     if (reconstruction != nullptr) {
       *reconstruction = Reconstruct();
     }
-    Write(buffer);
-    return true;
+    return Write(buffer);
   }
 
  private:
@@ -354,15 +353,14 @@ class LaplacianEncoder {
     }
   }
 
-  void Write(EncoderBuffer *buffer) const {
+  bool Write(EncoderBuffer *buffer) const {
     buffer->Encode(static_cast<uint8_t>(setup_.kind()));
     buffer->Encode(static_cast<uint8_t>(options_.step_bits));
     buffer->Encode(static_cast<uint8_t>(options_.frame_bits));
-    WriteAnchors(buffer);
-    WriteResiduals(buffer);
+    return WriteAnchors(buffer) && WriteResiduals(buffer);
   }
 
-  void WriteAnchors(EncoderBuffer *buffer) const {
+  bool WriteAnchors(EncoderBuffer *buffer) const {
     // Extra anchors ascending, their values in the same order.
     const size_t num_chart_anchors = setup_.charts().anchors.size();
     std::vector<size_t> order(extra_anchors_.size());
@@ -394,13 +392,10 @@ class LaplacianEncoder {
       }
       references.Record(i, value);
     }
-    // Fails only on contexts or tokens the coder never receives.
-    const bool encoded = coder.Encode(buffer);
-    DRACO_DCHECK(encoded);
-    (void)encoded;
+    return coder.Encode(buffer);
   }
 
-  void WriteResiduals(EncoderBuffer *buffer) const {
+  bool WriteResiduals(EncoderBuffer *buffer) const {
     UvResidualEncoder coder;
     coder.Reset(static_cast<int>(q_.size()));
     for (int v = 0; v < setup_.num_vertices(); ++v) {
@@ -410,10 +405,7 @@ class LaplacianEncoder {
         }
       }
     }
-    // Fails only on contexts or tokens the coder never receives.
-    const bool encoded = coder.Encode(buffer);
-    DRACO_DCHECK(encoded);
-    (void)encoded;
+    return coder.Encode(buffer);
   }
 
   const UvLaplacianMesh &mesh_;

@@ -37,9 +37,9 @@ namespace draco {
 // predicted, the fallbacks and the weak cases).
 //
 // The encoder tries both processing orders (max prediction degree, Draco's
-// own) and both predictor kinds, and keeps the smallest. It codes the corrections itself with
-// UvResidualEncoder and hands Draco all-zero corrections, which Draco's
-// symbol coder stores in a few bytes.
+// own) and both predictor kinds, and keeps the smallest. It codes the
+// corrections itself with UvResidualEncoder and hands Draco all-zero
+// corrections, which Draco's symbol coder stores in a few bytes.
 //
 // Prediction data, before the base class's transform data: the 8-byte
 // bitstream guard (uv_bitstream_guard.h), the format version byte, the
