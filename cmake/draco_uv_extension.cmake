@@ -5,6 +5,9 @@
 # unit tests all build with the extension.
 
 get_filename_component(draco_uv_root "${CMAKE_CURRENT_LIST_DIR}/.." ABSOLUTE)
+# The prediction scheme families (prediction_schemes/<family>/) and the rest
+# of the extension (draco_ext/<capability>/), both included from the root.
+set(draco_uv_schemes "${draco_uv_root}/prediction_schemes")
 set(draco_uv_ext "${draco_uv_root}/draco_ext")
 
 list(APPEND draco_include_paths "${draco_uv_root}")
@@ -26,17 +29,17 @@ list(
          "${draco_uv_ext}/common/uv_prediction_ids.h"
          "${draco_uv_ext}/common/fixed_point.h"
          "${draco_uv_ext}/common/threads.h"
-         "${draco_uv_ext}/weighted/uv_lookahead.h"
-         "${draco_uv_ext}/weighted/uv_processing_order.h"
-         "${draco_uv_ext}/weighted/mesh_prediction_scheme_tex_coords_weighted_decoder.h"
-         "${draco_uv_ext}/weighted/mesh_prediction_scheme_tex_coords_weighted_predictor.h"
-         "${draco_uv_ext}/weighted/mesh_prediction_scheme_tex_coords_weighted_shared.h"
-         "${draco_uv_ext}/weighted/uv_stencil_geometry.h")
+         "${draco_uv_schemes}/weighted/uv_lookahead.h"
+         "${draco_uv_schemes}/weighted/uv_processing_order.h"
+         "${draco_uv_schemes}/weighted/mesh_prediction_scheme_tex_coords_weighted_decoder.h"
+         "${draco_uv_schemes}/weighted/mesh_prediction_scheme_tex_coords_weighted_predictor.h"
+         "${draco_uv_schemes}/weighted/mesh_prediction_scheme_tex_coords_weighted_shared.h"
+         "${draco_uv_schemes}/weighted/uv_stencil_geometry.h")
 
 list(
   APPEND draco_compression_attributes_pred_schemes_enc_sources
          "${draco_uv_ext}/hooks/prediction_scheme_encoders.h"
-         "${draco_uv_ext}/weighted/mesh_prediction_scheme_tex_coords_weighted_encoder.h")
+         "${draco_uv_schemes}/weighted/mesh_prediction_scheme_tex_coords_weighted_encoder.h")
 
 # Object libraries with Draco's include paths (the prediction scheme lists
 # above are header-only and compiled without them).
@@ -74,15 +77,15 @@ set(DRACO_UV_DENSE_FRONT_AVX2 OFF CACHE INTERNAL "")
 if(DRACO_UV_LAPLACIAN)
   list(
     APPEND draco_compression_entropy_sources
-           "${draco_uv_ext}/laplacian/mesh_prediction_scheme_tex_coords_laplacian_decoder.h"
-           "${draco_uv_ext}/laplacian/mesh_prediction_scheme_tex_coords_laplacian_encoder.h"
-           "${draco_uv_ext}/laplacian/mesh_prediction_scheme_tex_coords_laplacian_shared.h"
-           "${draco_uv_ext}/laplacian/uv_laplacian_coder.cc"
-           "${draco_uv_ext}/laplacian/uv_laplacian_coder.h"
-           "${draco_uv_ext}/laplacian/uv_laplacian_operator.cc"
-           "${draco_uv_ext}/laplacian/uv_laplacian_operator.h"
-           "${draco_uv_ext}/laplacian/uv_laplacian_system.cc"
-           "${draco_uv_ext}/laplacian/uv_laplacian_system.h"
+           "${draco_uv_schemes}/laplacian/mesh_prediction_scheme_tex_coords_laplacian_decoder.h"
+           "${draco_uv_schemes}/laplacian/mesh_prediction_scheme_tex_coords_laplacian_encoder.h"
+           "${draco_uv_schemes}/laplacian/mesh_prediction_scheme_tex_coords_laplacian_shared.h"
+           "${draco_uv_schemes}/laplacian/uv_laplacian_coder.cc"
+           "${draco_uv_schemes}/laplacian/uv_laplacian_coder.h"
+           "${draco_uv_schemes}/laplacian/uv_laplacian_operator.cc"
+           "${draco_uv_schemes}/laplacian/uv_laplacian_operator.h"
+           "${draco_uv_schemes}/laplacian/uv_laplacian_system.cc"
+           "${draco_uv_schemes}/laplacian/uv_laplacian_system.h"
            "${draco_uv_ext}/linalg/sparse_cholesky.cc"
            "${draco_uv_ext}/linalg/sparse_cholesky.h"
            "${draco_uv_ext}/linalg/dense_front.cc"
@@ -116,8 +119,8 @@ list(
          "${draco_uv_ext}/hooks/tool_flags.h"
          "${draco_uv_ext}/common/uv_rmse.cc"
          "${draco_uv_ext}/common/uv_rmse.h"
-         "${draco_uv_ext}/laplacian/uv_laplacian_settings.cc"
-         "${draco_uv_ext}/laplacian/uv_laplacian_settings.h"
+         "${draco_uv_schemes}/laplacian/uv_laplacian_settings.cc"
+         "${draco_uv_schemes}/laplacian/uv_laplacian_settings.h"
          "${draco_uv_ext}/options/uv_compression_options.cc"
          "${draco_uv_ext}/options/uv_compression_options.h"
          "${draco_uv_ext}/options/uv_configure.cc"

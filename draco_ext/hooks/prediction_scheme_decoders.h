@@ -24,9 +24,9 @@
 #include <memory>
 
 #include "draco_ext/hooks/prediction_scheme_ids.h"
-#include "draco_ext/weighted/mesh_prediction_scheme_tex_coords_weighted_decoder.h"
+#include "prediction_schemes/weighted/mesh_prediction_scheme_tex_coords_weighted_decoder.h"
 #ifdef DRACO_UV_LAPLACIAN
-#include "draco_ext/laplacian/mesh_prediction_scheme_tex_coords_laplacian_decoder.h"
+#include "prediction_schemes/laplacian/mesh_prediction_scheme_tex_coords_laplacian_decoder.h"
 #endif
 
 namespace draco {

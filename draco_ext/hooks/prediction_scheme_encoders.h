@@ -26,9 +26,9 @@
 #include "draco/compression/attributes/prediction_schemes/prediction_scheme_factory.h"
 #include "draco/compression/mesh/mesh_encoder.h"
 #include "draco_ext/hooks/prediction_scheme_ids.h"
-#include "draco_ext/weighted/mesh_prediction_scheme_tex_coords_weighted_encoder.h"
+#include "prediction_schemes/weighted/mesh_prediction_scheme_tex_coords_weighted_encoder.h"
 #ifdef DRACO_UV_LAPLACIAN
-#include "draco_ext/laplacian/mesh_prediction_scheme_tex_coords_laplacian_encoder.h"
+#include "prediction_schemes/laplacian/mesh_prediction_scheme_tex_coords_laplacian_encoder.h"
 #endif
 
 namespace draco {

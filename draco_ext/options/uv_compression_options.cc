@@ -20,7 +20,7 @@
 #include <cstring>
 #include <utility>
 
-#include "draco_ext/laplacian/uv_laplacian_settings.h"
+#include "prediction_schemes/laplacian/uv_laplacian_settings.h"
 
 #ifdef DRACO_TRANSCODER_SUPPORTED
 #include "draco/compression/draco_compression_options.h"

@@ -26,8 +26,8 @@
 #include "draco/attributes/attribute_quantization_transform.h"
 #include "draco/core/encoder_buffer.h"
 #include "draco/core/quantization_utils.h"
-#include "draco_ext/laplacian/uv_laplacian_settings.h"
 #include "draco_ext/options/uv_prediction_options.h"
+#include "prediction_schemes/laplacian/uv_laplacian_settings.h"
 
 // The WebAssembly encoder links no decoder, so it cannot measure a lossy
 // trial encode.

@@ -17,7 +17,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "draco_ext/laplacian/uv_laplacian_settings.h"
+#include "prediction_schemes/laplacian/uv_laplacian_settings.h"
 
 namespace draco {
 

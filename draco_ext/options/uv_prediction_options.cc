@@ -22,7 +22,7 @@
 #include "draco_ext/common/uv_prediction_ids.h"
 #include "draco_ext/common/uv_vertices.h"
 #include "draco_ext/options/uv_laplacian_options.h"
-#include "draco_ext/weighted/uv_stencil_geometry.h"
+#include "prediction_schemes/weighted/uv_stencil_geometry.h"
 
 namespace draco {
 

@@ -40,7 +40,7 @@
 #include "draco_ext/common/uv_bitstream_guard.h"
 #include "draco_ext/common/uv_residual_coder.h"
 #include "gtest/gtest.h"
-#include "draco_ext/weighted/mesh_prediction_scheme_tex_coords_weighted_shared.h"
+#include "prediction_schemes/weighted/mesh_prediction_scheme_tex_coords_weighted_shared.h"
 #include "tests/draco_uv_test_utils.h"
 
 namespace draco {

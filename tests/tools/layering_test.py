@@ -12,74 +12,139 @@
 # WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
 # See the License for the specific language governing permissions and
 # limitations under the License.
-"""Checks that draco_ext/'s folders depend on each other in one direction.
+"""Checks that draco-uv's source folders depend on each other in one direction.
 
-  tools -> eval -> gltf -> options -> schemes (weighted, laplacian, seams)
-  -> linalg -> common, and web -> gltf (the JS encoder API, whose glTF
-  writes share the glTF encoder's rule for -uv_pred auto), with hooks/
-  (what Draco's patched sources include) above the schemes and web/ and
-  below nothing of ours.
+The sources live in two roots: prediction_schemes/<family>/ (the prediction
+scheme families) and draco_ext/<capability>/ (everything else). Their
+folders form one chain,
 
-Also: only laplacian/ and linalg/ include Eigen, and options/ includes no
-Laplacian header but the light uv_laplacian_settings.h, so that a
-lossless-only build (DRACO_UV_LAPLACIAN=OFF) compiles neither.
+  tools -> eval -> gltf -> options -> schemes -> linalg -> common,
 
-Usage: layering_test.py DRACO_EXT_DIR
+where the schemes are every prediction_schemes/ family plus
+draco_ext/seams/ (they do not include each other), web -> gltf (the JS
+encoder API, whose glTF writes share the glTF encoder's rule for -uv_pred
+auto), and hooks/ (what Draco's patched sources include) sits above the
+schemes and web/ and is included by nothing of ours.
+
+Also: only prediction_schemes/laplacian/ and draco_ext/linalg/ include
+Eigen, and options/ includes no Laplacian header but the light
+uv_laplacian_settings.h, so that a lossless-only build
+(DRACO_UV_LAPLACIAN=OFF) compiles neither.
+
+Every folder of both roots must be in the table, and every folder of the
+table must exist and hold a header.
+
+Usage: layering_test.py SOURCE_ROOT (the repository root, from which the
+sources include each other: "draco_ext/...", "prediction_schemes/...")
 """
 import pathlib
 import re
 import sys
 
-ALLOWED = {
-    'common': set(),
-    'linalg': {'common'},
-    'weighted': {'common'},
-    'seams': {'common'},
-    'laplacian': {'common', 'linalg'},
-    'options': {'common', 'weighted', 'seams', 'laplacian'},
-    'gltf': {'common', 'options'},
-    'web': {'common', 'options', 'gltf'},
-    'hooks': {'common', 'weighted', 'seams', 'laplacian', 'options', 'gltf',
-              'web'},
-    'eval': {'common', 'weighted', 'seams', 'laplacian', 'linalg', 'options',
-             'gltf'},
-    'tools': {'common', 'options', 'eval'},
+ROOTS = ('draco_ext', 'prediction_schemes')
+
+COMMON = 'draco_ext/common'
+LINALG = 'draco_ext/linalg'
+SEAMS = 'draco_ext/seams'
+OPTIONS = 'draco_ext/options'
+GLTF = 'draco_ext/gltf'
+WEB = 'draco_ext/web'
+EVAL = 'draco_ext/eval'
+
+# prediction_schemes/<family>/ and what it may include besides itself. A new
+# family is one entry here; the layers above reach it as one of SCHEMES.
+SCHEME_FAMILIES = {
+    'weighted': {COMMON},
+    'laplacian': {COMMON, LINALG},
 }
-EIGEN_FOLDERS = {'laplacian', 'linalg'}
+SCHEMES = {f'prediction_schemes/{name}' for name in SCHEME_FAMILIES} | {SEAMS}
+
+# Each folder and the folders it may include besides itself.
+ALLOWED = {
+    COMMON: set(),
+    LINALG: {COMMON},
+    SEAMS: {COMMON},
+    **{f'prediction_schemes/{name}': deps
+       for name, deps in SCHEME_FAMILIES.items()},
+    OPTIONS: {COMMON} | SCHEMES,
+    GLTF: {COMMON, OPTIONS},
+    WEB: {COMMON, OPTIONS, GLTF},
+    'draco_ext/hooks': {COMMON, OPTIONS, GLTF, WEB} | SCHEMES,
+    EVAL: {COMMON, LINALG, OPTIONS, GLTF} | SCHEMES,
+    'draco_ext/tools': {COMMON, OPTIONS, EVAL},
+}
+EIGEN_FOLDERS = {'prediction_schemes/laplacian', LINALG}
 # The only Laplacian header that builds without the Laplacian coder.
-LIGHT_LAPLACIAN = 'draco_ext/laplacian/uv_laplacian_settings.h'
+LIGHT_LAPLACIAN = 'prediction_schemes/laplacian/uv_laplacian_settings.h'
 INCLUDE = re.compile(r'^\s*#\s*include\s+[<"]([^>"]+)[>"]', re.M)
 
 
-def violations(root):
-    for path in sorted(root.rglob('*')):
-        if path.suffix not in ('.h', '.cc'):
-            continue
-        folder = path.relative_to(root).parts[0]
-        if folder not in ALLOWED:
-            yield f'{path}: folder {folder}/ is not in the layering table'
-            continue
-        for header in INCLUDE.findall(path.read_text(encoding='utf-8')):
-            if header.startswith('Eigen/') and folder not in EIGEN_FOLDERS:
-                yield f'{path}: includes <{header}> outside laplacian/, linalg/'
-            if not header.startswith('draco_ext/'):
+def folder_of(relative):
+    """'draco_ext/options/x.h' -> 'draco_ext/options' (None above a folder)."""
+    parts = pathlib.PurePosixPath(relative).parts
+    return '/'.join(parts[:2]) if len(parts) > 2 else None
+
+
+def table_cycles():
+    """The folders of ALLOWED that reach themselves (the arrows' one way)."""
+    def reach(folder, seen):
+        for target in ALLOWED.get(folder, ()):
+            if target not in seen:
+                seen.add(target)
+                reach(target, seen)
+        return seen
+    return [folder for folder in sorted(ALLOWED)
+            if folder in reach(folder, set())]
+
+
+def violations(source_root):
+    for folder in table_cycles():
+        yield f'layering table: {folder}/ includes itself through others'
+    missing = [root for root in ROOTS if not (source_root / root).is_dir()]
+    if missing:
+        yield f'{source_root}: no {", ".join(missing)} folder (not the root?)'
+        return
+    for root in ROOTS:
+        for entry in sorted((source_root / root).iterdir()):
+            name = f'{root}/{entry.name}'
+            if entry.is_dir() and name not in ALLOWED:
+                yield f'{entry}: folder {name}/ is not in the layering table'
+            elif entry.is_file() and entry.suffix in ('.h', '.cc'):
+                yield f'{entry}: source outside a folder of {root}/'
+    for folder in sorted(ALLOWED):
+        if not list((source_root / folder).glob('*.h')):
+            yield f'{source_root / folder}: table folder without headers'
+    for root in ROOTS:
+        for path in sorted((source_root / root).rglob('*')):
+            if path.suffix not in ('.h', '.cc'):
                 continue
-            target = header.split('/')[1]
-            if target != folder and target not in ALLOWED[folder]:
-                yield f'{path}: {folder}/ must not include {header}'
-            if (folder == 'options' and target == 'laplacian' and
-                    header != LIGHT_LAPLACIAN):
-                yield f'{path}: options/ may include only {LIGHT_LAPLACIAN}'
+            folder = folder_of(path.relative_to(source_root).as_posix())
+            if folder not in ALLOWED:
+                continue  # Reported above.
+            text = path.read_text(encoding='utf-8')
+            for header in INCLUDE.findall(text):
+                if header.startswith('Eigen/') and folder not in EIGEN_FOLDERS:
+                    yield (f'{path}: includes <{header}> outside '
+                           f'{", ".join(sorted(EIGEN_FOLDERS))}')
+                if not header.startswith(tuple(r + '/' for r in ROOTS)):
+                    continue
+                target = folder_of(header)
+                if target != folder and target not in ALLOWED[folder]:
+                    yield f'{path}: {folder}/ must not include {header}'
+                if (folder == OPTIONS and
+                        target == 'prediction_schemes/laplacian' and
+                        header != LIGHT_LAPLACIAN):
+                    yield (f'{path}: {OPTIONS}/ may include only '
+                           f'{LIGHT_LAPLACIAN}')
 
 
 def main():
-    root = pathlib.Path(sys.argv[1])
-    found = list(violations(root))
+    if len(sys.argv) != 2:
+        print(__doc__)
+        return 2
+    found = list(violations(pathlib.Path(sys.argv[1])))
     for line in found:
         print('FAIL:', line)
-    if not list(root.rglob('*.h')):
-        print('FAIL: no headers under', root)
-        return 1
     print(f'layering: {len(found)} violation(s)')
     return 1 if found else 0
 

@@ -20,8 +20,8 @@
 
 #include "draco/compression/draco_compression_options.h"
 #include "draco_ext/hooks/prediction_scheme_ids.h"
-#include "draco_ext/laplacian/uv_laplacian_settings.h"
 #include "gtest/gtest.h"
+#include "prediction_schemes/laplacian/uv_laplacian_settings.h"
 
 namespace draco {
 namespace {

@@ -21,8 +21,8 @@
 #include <string>
 #include <vector>
 
-#include "draco_ext/laplacian/uv_laplacian_settings.h"
 #include "gtest/gtest.h"
+#include "prediction_schemes/laplacian/uv_laplacian_settings.h"
 #include "tests/draco_uv_test_utils.h"
 
 namespace draco {
