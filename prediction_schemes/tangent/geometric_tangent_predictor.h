@@ -83,7 +83,7 @@ struct GeometricTangentPrediction {
 // quantised UVs of small triangles turn the gradient (qt 12 on a triangle a
 // few texels wide). MikkTSpace projects the edges onto the normal plane
 // before measuring a corner's angle; here the 3D angle is used, and
-// approximated within 0.004 radian (tangent_geometry.h).
+// approximated within 0.072 radian (tangent_geometry.h).
 template <class MeshDataT>
 class GeometricTangentPredictor {
  public:

@@ -81,11 +81,23 @@ inline int64_t Dot(const TangentVec3 &a, const TangentVec3 &b) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
 
+// |v| scaled by a power of two so that its largest component has exactly
+// |bits| bits (shifted right toward zero, or multiplied); the zero vector
+// stays zero.
+inline TangentVec3 ScaleToBits(const TangentVec3 &v, int bits) {
+  const int length = BitLength(MaxAbsBits(v));
+  if (length >= bits) {
+    return ShiftRight(v, length - bits);
+  }
+  const int64_t factor = int64_t{1} << (bits - length);
+  return {v[0] * factor, v[1] * factor, v[2] * factor};
+}
+
 // The unit vector (kTangentUnit long) along |v|; false for the zero vector.
-// |v| is shifted below 2^20 first, which keeps its direction within 2^-19,
+// |v| is scaled to 20 bits first, which keeps its direction within 2^-18,
 // so that one division gives all three components.
 inline bool NormalizeToUnit(const TangentVec3 &v, TangentVec3 *unit) {
-  const TangentVec3 w = ShiftRight(v, ShiftBelow(MaxAbsBits(v), 20));
+  const TangentVec3 w = ScaleToBits(v, 20);
   const uint64_t squared = static_cast<uint64_t>(Dot(w, w));
   if (squared == 0) {
     return false;
@@ -137,7 +149,7 @@ inline TangentVec3 ProjectOntoPlane(const TangentVec3 &v,
 // two edges, and |x|, their dot product: the "diamond angle"
 // (pi / 2) (1 - x / (|x| + y)) in units of pi / 2^kTangentAngleBits, which
 // grows with the angle from 0 to pi and is exact at 0, pi / 4, pi / 2, 3 pi
-// / 4 and pi, within 0.06 radian elsewhere: one division where an arctangent
+// / 4 and pi, within 0.072 radian elsewhere: one division where an arctangent
 // takes a polynomial and its quadrants. Inputs below 2^40.
 inline int32_t DiamondAngle(uint64_t y, int64_t x) {
   constexpr int64_t kHalf = int64_t{1} << (kTangentAngleBits - 1);
@@ -155,27 +167,29 @@ inline std::array<int32_t, 3> CornerAngles(const TangentVec3 &e1,
                                            const TangentVec3 &e2,
                                            const TangentVec3 &normal) {
   const TangentVec3 e3 = Subtract(e2, e1);
-  // The products are below 3 * 2^62; shifted so that all are below 2^40.
-  int64_t dots[3] = {Dot(e1, e2), -Dot(e1, e3), Dot(e2, e3)};
-  const TangentVec3 n =
-      ShiftRight(normal, ShiftBelow(MaxAbsBits(normal), 30));
-  const int normal_shift = ShiftBelow(MaxAbsBits(normal), 30);
+  // The dot products (below 3 * 2^62) and the normal, scaled together so
+  // that the larger has 30 bits: precise for small triangles, and the
+  // normal's length and the dots below 2^32.
+  const TangentVec3 dots = {Dot(e1, e2), -Dot(e1, e3), Dot(e2, e3)};
+  const int length = BitLength(MaxAbsBits(dots) | MaxAbsBits(normal));
+  const int shift = length - 30;
+  TangentVec3 n = normal, x = dots;
+  if (shift > 0) {
+    n = ShiftRight(normal, shift);
+    x = ShiftRight(dots, shift);
+  } else if (shift < 0) {
+    const int64_t factor = int64_t{1} << -shift;
+    for (int i = 0; i < 3; ++i) {
+      n[i] = normal[i] * factor;
+      x[i] = dots[i] * factor;
+    }
+  }
   const uint64_t twice_area = IntSqrtFloor(static_cast<uint64_t>(Dot(n, n)));
-  const int dot_shift = ShiftBelow(AbsAsUnsigned(dots[0]) |
-                                       AbsAsUnsigned(dots[1]) |
-                                       AbsAsUnsigned(dots[2]),
-                                   39);
-  // Both in units of 2^max(shift): twice_area is in 2^normal_shift.
-  const int shift = std::max(normal_shift, dot_shift);
-  const uint64_t y = twice_area >> (shift - normal_shift);
-  if (y == 0) {
+  if (twice_area == 0) {
     return {0, 0, 0};
   }
-  std::array<int32_t, 3> angles;
-  for (int k = 0; k < 3; ++k) {
-    angles[k] = DiamondAngle(y, ShiftRightTowardZero(dots[k], shift));
-  }
-  return angles;
+  return {DiamondAngle(twice_area, x[0]), DiamondAngle(twice_area, x[1]),
+          DiamondAngle(twice_area, x[2])};
 }
 
 }  // namespace draco
