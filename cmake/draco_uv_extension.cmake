@@ -34,12 +34,19 @@ list(
          "${draco_uv_schemes}/weighted/mesh_prediction_scheme_tex_coords_weighted_decoder.h"
          "${draco_uv_schemes}/weighted/mesh_prediction_scheme_tex_coords_weighted_predictor.h"
          "${draco_uv_schemes}/weighted/mesh_prediction_scheme_tex_coords_weighted_shared.h"
-         "${draco_uv_schemes}/weighted/uv_stencil_geometry.h")
+         "${draco_uv_schemes}/weighted/uv_stencil_geometry.h"
+         "${draco_uv_schemes}/tangent/geometric_tangent_coder.h"
+         "${draco_uv_schemes}/tangent/geometric_tangent_predictor.h"
+         "${draco_uv_schemes}/tangent/geometric_tangent_settings.h"
+         "${draco_uv_schemes}/tangent/mesh_prediction_scheme_geometric_tangent_decoder.h"
+         "${draco_uv_schemes}/tangent/mesh_prediction_scheme_geometric_tangent_shared.h"
+         "${draco_uv_schemes}/tangent/tangent_geometry.h")
 
 list(
   APPEND draco_compression_attributes_pred_schemes_enc_sources
          "${draco_uv_ext}/hooks/prediction_scheme_encoders.h"
-         "${draco_uv_schemes}/weighted/mesh_prediction_scheme_tex_coords_weighted_encoder.h")
+         "${draco_uv_schemes}/weighted/mesh_prediction_scheme_tex_coords_weighted_encoder.h"
+         "${draco_uv_schemes}/tangent/mesh_prediction_scheme_geometric_tangent_encoder.h")
 
 # Object libraries with Draco's include paths (the prediction scheme lists
 # above are header-only and compiled without them).

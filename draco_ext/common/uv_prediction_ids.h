@@ -18,7 +18,9 @@
 #ifndef DRACO_EXT_COMMON_UV_PREDICTION_IDS_H_
 #define DRACO_EXT_COMMON_UV_PREDICTION_IDS_H_
 
+#include "draco/attributes/geometry_attribute.h"
 #include "draco/compression/config/compression_shared.h"
+#include "draco/draco_features.h"
 
 namespace draco {
 
@@ -29,6 +31,25 @@ namespace draco {
 constexpr bool IsDracoUvPredictionMethod(int method) {
   return method > MESH_PREDICTION_GEOMETRIC_NORMAL &&
          method < NUM_PREDICTION_SCHEMES;
+}
+
+// Whether draco-uv's scheme |method| may code an attribute of |type|: the
+// texture coordinate schemes TEX_COORD; the tangent scheme GENERIC (how
+// Draco's bitstream and its JavaScript API carry glTF tangents) and, with
+// Draco's transcoder, TANGENT (Draco's glTF reader's type, which its glTF
+// encoder turns into GENERIC just before encoding).
+inline bool IsDracoUvPredictionMethodFor(int method,
+                                         GeometryAttribute::Type type) {
+  if (method == MESH_PREDICTION_GEOMETRIC_TANGENT) {
+#ifdef DRACO_TRANSCODER_SUPPORTED
+    if (type == GeometryAttribute::TANGENT) {
+      return true;
+    }
+#endif
+    return type == GeometryAttribute::GENERIC;
+  }
+  return IsDracoUvPredictionMethod(method) &&
+         type == GeometryAttribute::TEX_COORD;
 }
 
 }  // namespace draco

@@ -54,12 +54,12 @@ uint64_t CostOfTable(const Histogram &histogram) {
   return kTableOverheadInBitUnits + table.CostInBitUnits(histogram);
 }
 
-// The table of each context under |table_starts|.
-std::array<uint8_t, kUvResidualNumContexts> TablesOfContexts(
-    uint16_t table_starts) {
-  std::array<uint8_t, kUvResidualNumContexts> table_of;
+// The table of each of |num_contexts| contexts under |table_starts|.
+std::array<uint8_t, kMaxResidualContexts> TablesOfContexts(
+    uint16_t table_starts, int num_contexts) {
+  std::array<uint8_t, kMaxResidualContexts> table_of = {};
   int table = 0;
-  for (int c = 0; c < kUvResidualNumContexts; ++c) {
+  for (int c = 0; c < num_contexts; ++c) {
     table += (table_starts >> c) & 1;
     table_of[c] = static_cast<uint8_t>(table);
   }
@@ -74,7 +74,7 @@ void UvResidualEncoder::Reset(int expected) {
 }
 
 void UvResidualEncoder::Add(int context, int32_t residual) {
-  DRACO_DCHECK_LT(context, kUvResidualNumContexts);
+  DRACO_DCHECK_LT(context, num_contexts_);
   const uint32_t z = ConvertSignedIntToSymbol(residual);
   Symbol symbol{static_cast<uint8_t>(context), static_cast<uint8_t>(z), 0, 0};
   if (z >= kUvResidualDirectTokens) {
@@ -95,8 +95,8 @@ uint16_t UvResidualEncoder::ChooseTableStarts() const {
     Histogram histogram;
     uint64_t cost;
   };
-  std::vector<Run> runs(kUvResidualNumContexts);
-  for (int c = 0; c < kUvResidualNumContexts; ++c) {
+  std::vector<Run> runs(num_contexts_);
+  for (int c = 0; c < num_contexts_; ++c) {
     runs[c] = {c, Histogram(kNumTokens, 0), 0};
   }
   for (const Symbol &symbol : symbols_) {
@@ -141,12 +141,13 @@ bool UvResidualEncoder::Encode(EncoderBuffer *buffer) const {
 
 bool UvResidualEncoder::Encode(uint16_t table_starts,
                                EncoderBuffer *buffer) const {
-  if ((table_starts & ~kUvResidualAllTables) != 0) {
+  if (num_contexts_ < 1 || num_contexts_ > kMaxResidualContexts ||
+      (table_starts & ~ResidualAllTables(num_contexts_)) != 0) {
     return false;
   }
-  const std::array<uint8_t, kUvResidualNumContexts> table_of =
-      TablesOfContexts(table_starts);
-  const int num_tables = table_of.back() + 1;
+  const std::array<uint8_t, kMaxResidualContexts> table_of =
+      TablesOfContexts(table_starts, num_contexts_);
+  const int num_tables = table_of[num_contexts_ - 1] + 1;
   std::vector<std::vector<uint32_t>> tokens(num_tables);
   std::vector<Histogram> histograms(num_tables, Histogram(kNumTokens, 0));
   DirectBitEncoder raw_bits;
@@ -185,13 +186,14 @@ bool UvResidualEncoder::Encode(uint16_t table_starts,
 
 bool UvResidualDecoder::Decode(int count, DecoderBuffer *buffer) {
   uint16_t table_starts;
-  if (count < 0 || !buffer->Decode(&table_starts) ||
-      (table_starts & ~kUvResidualAllTables) != 0) {
+  if (count < 0 || num_contexts_ < 1 || num_contexts_ > kMaxResidualContexts ||
+      !buffer->Decode(&table_starts) ||
+      (table_starts & ~ResidualAllTables(num_contexts_)) != 0) {
     return false;
   }
-  table_of_ = TablesOfContexts(table_starts);
-  const int num_tables = table_of_.back() + 1;
-  std::array<uint32_t, kUvResidualNumContexts> counts = {};
+  table_of_ = TablesOfContexts(table_starts, num_contexts_);
+  const int num_tables = table_of_[num_contexts_ - 1] + 1;
+  std::array<uint32_t, kMaxResidualContexts> counts = {};
   int64_t total = 0;
   for (int t = 0; t < num_tables; ++t) {
     if (!DecodeVarint(&counts[t], buffer) || counts[t] > count - total) {
@@ -204,7 +206,7 @@ bool UvResidualDecoder::Decode(int count, DecoderBuffer *buffer) {
 }
 
 bool UvResidualDecoder::DecodeTables(
-    const std::array<uint32_t, kUvResidualNumContexts> &counts, int num_tables,
+    const std::array<uint32_t, kMaxResidualContexts> &counts, int num_tables,
     DecoderBuffer *buffer) {
   uint32_t table_bytes;
   if (!DecodeVarint(&table_bytes, buffer) ||
@@ -213,14 +215,14 @@ bool UvResidualDecoder::DecodeTables(
   }
   BitReader reader(reinterpret_cast<const uint8_t *>(buffer->data_head()),
                    table_bytes);
-  std::array<RansTokenTable, kUvResidualNumContexts> tables;
+  std::array<RansTokenTable, kMaxResidualContexts> tables;
   for (int t = 0; t < num_tables; ++t) {
     if (counts[t] > 0 && !tables[t].Read(&reader)) {
       return false;
     }
   }
   buffer->Advance(table_bytes);
-  for (int t = 0; t < kUvResidualNumContexts; ++t) {
+  for (int t = 0; t < kMaxResidualContexts; ++t) {
     next_[t] = 0;
     tokens_[t].clear();
     if (t < num_tables && counts[t] > 0 &&

@@ -31,8 +31,12 @@
 // bytes of small meshes with per-context tables. Raw bits go through one
 // DirectBitEncoder.
 //
+// The texture coordinate schemes use kUvResidualNumContexts contexts; other
+// users choose up to kMaxResidualContexts (the decoder must be told the
+// same number).
+//
 // Stream: uint16 table starts (bit c set: context c starts a new table;
-// bit 0 and bits from kUvResidualNumContexts on are 0); per table a varint
+// bit 0 and bits from the number of contexts on are 0); per table a varint
 // token count; a varint byte length and the bit-packed tables of the
 // non-empty ones; per non-empty table a varint byte length and its rANS
 // data; then the raw bits.
@@ -50,25 +54,35 @@
 
 namespace draco {
 
-// Contexts 0-7: the bit length of the neighbours' residuals (capped);
-// kUvResidualNoNeighbourContext and kUvResidualNoStencilContext below.
+// The most contexts a coder can have (the table starts are 16 bits).
+constexpr int kMaxResidualContexts = 16;
+// The texture coordinate schemes' contexts 0-7: the bit length of the
+// neighbours' residuals (capped); kUvResidualNoNeighbourContext and
+// kUvResidualNoStencilContext below.
 constexpr int kUvResidualNumContexts = 10;
 // A texture coordinate without decoded neighbours: the first of its chart.
 constexpr int kUvResidualNoNeighbourContext = 8;
 // A texture coordinate with decoded neighbours but no stencil to predict
 // from: mostly the second of its chart, whose residual is a UV edge.
 constexpr int kUvResidualNoStencilContext = 9;
-// Every context in its own table.
+// Every one of |num_contexts| contexts in its own table.
+constexpr uint16_t ResidualAllTables(int num_contexts) {
+  return static_cast<uint16_t>(((1u << num_contexts) - 1) & ~1u);
+}
 constexpr uint16_t kUvResidualAllTables =
-    ((1u << kUvResidualNumContexts) - 1) & ~1u;
+    ResidualAllTables(kUvResidualNumContexts);
 // Tokens below this are residuals' zig-zag values themselves.
 constexpr uint32_t kUvResidualDirectTokens = 16;
 
 class UvResidualEncoder {
  public:
+  // A coder of |num_contexts| contexts, 1 to kMaxResidualContexts.
+  explicit UvResidualEncoder(int num_contexts = kUvResidualNumContexts)
+      : num_contexts_(num_contexts) {}
   // Drops all residuals; |expected| residuals will be added.
   void Reset(int expected);
-  // Appends a residual in decoding order; |context| < kUvResidualNumContexts.
+  // Appends a residual in decoding order; |context| < the number of
+  // contexts.
   void Add(int context, int32_t residual);
   // Writes all residuals with the table starts that make them smallest.
   bool Encode(EncoderBuffer *buffer) const;
@@ -84,11 +98,15 @@ class UvResidualEncoder {
   };
   // The table starts Encode() writes: greedy merges of neighbouring tables.
   uint16_t ChooseTableStarts() const;
+  int num_contexts_;
   std::vector<Symbol> symbols_;
 };
 
 class UvResidualDecoder {
  public:
+  // A decoder of |num_contexts| contexts, as the encoder had.
+  explicit UvResidualDecoder(int num_contexts = kUvResidualNumContexts)
+      : num_contexts_(num_contexts) {}
   // Reads the streams of |count| residuals. Fails on truncated or
   // inconsistent data.
   bool Decode(int count, DecoderBuffer *buffer);
@@ -97,7 +115,7 @@ class UvResidualDecoder {
   // Inline: called twice per texture coordinate; the call alone cost
   // 0.4-0.6 % of a whole decode.
   bool Next(int context, int32_t *residual) {
-    if (context < 0 || context >= kUvResidualNumContexts) {
+    if (context < 0 || context >= num_contexts_) {
       return false;
     }
     const int group = table_of_[context];
@@ -117,12 +135,13 @@ class UvResidualDecoder {
   bool DecodeSplitToken(uint32_t token, int32_t *residual);
 
   // Reads the tables and tokens of the |counts| after the table starts.
-  bool DecodeTables(const std::array<uint32_t, kUvResidualNumContexts> &counts,
+  bool DecodeTables(const std::array<uint32_t, kMaxResidualContexts> &counts,
                     int num_tables, DecoderBuffer *buffer);
 
-  std::array<uint8_t, kUvResidualNumContexts> table_of_ = {};
-  std::array<std::vector<uint32_t>, kUvResidualNumContexts> tokens_;
-  std::array<size_t, kUvResidualNumContexts> next_ = {};
+  int num_contexts_;
+  std::array<uint8_t, kMaxResidualContexts> table_of_ = {};
+  std::array<std::vector<uint32_t>, kMaxResidualContexts> tokens_;
+  std::array<size_t, kMaxResidualContexts> next_ = {};
   DirectBitDecoder raw_bits_;
 };
 

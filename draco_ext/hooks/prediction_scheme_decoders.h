@@ -25,6 +25,7 @@
 
 #include "draco_ext/hooks/prediction_scheme_ids.h"
 #include "prediction_schemes/weighted/mesh_prediction_scheme_tex_coords_weighted_decoder.h"
+#include "prediction_schemes/tangent/mesh_prediction_scheme_geometric_tangent_decoder.h"
 #ifdef DRACO_UV_LAPLACIAN
 #include "prediction_schemes/laplacian/mesh_prediction_scheme_tex_coords_laplacian_decoder.h"
 #endif
@@ -45,6 +46,9 @@ CreateDracoUvPredictionSchemeDecoder(PredictionSchemeMethod method,
       return std::make_unique<MeshPredictionSchemeTexCoordsWeightedDecoder<
           DataTypeT, TransformT, MeshDataT>>(attribute, transform, mesh_data,
                                              method);
+    case MESH_PREDICTION_GEOMETRIC_TANGENT:
+      return std::make_unique<MeshPredictionSchemeGeometricTangentDecoder<
+          DataTypeT, TransformT, MeshDataT>>(attribute, transform, mesh_data);
 #ifdef DRACO_UV_LAPLACIAN
     case MESH_PREDICTION_TEX_COORDS_LAPLACIAN:
       return std::make_unique<MeshPredictionSchemeTexCoordsLaplacianDecoder<

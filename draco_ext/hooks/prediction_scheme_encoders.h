@@ -27,6 +27,7 @@
 #include "draco/compression/mesh/mesh_encoder.h"
 #include "draco_ext/hooks/prediction_scheme_ids.h"
 #include "prediction_schemes/weighted/mesh_prediction_scheme_tex_coords_weighted_encoder.h"
+#include "prediction_schemes/tangent/mesh_prediction_scheme_geometric_tangent_encoder.h"
 #ifdef DRACO_UV_LAPLACIAN
 #include "prediction_schemes/laplacian/mesh_prediction_scheme_tex_coords_laplacian_encoder.h"
 #endif
@@ -55,13 +56,18 @@ struct DracoUvMeshPredictionSchemeEncoderFactory {
 // The encoder of draco-uv scheme |method| for attribute |att_id| of
 // |encoder|'s geometry. Where a weighted scheme has no connectivity to work
 // on, it falls back to delta coding like Draco's own mesh schemes; the
-// Laplacian scheme returns null there (and in a lossless-only build).
+// Laplacian and tangent schemes return null there (and the Laplacian one in a
+// lossless-only build).
 template <typename DataTypeT, class TransformT>
 std::unique_ptr<PredictionSchemeEncoder<DataTypeT, TransformT>>
 CreateDracoUvPredictionSchemeEncoder(PredictionSchemeMethod method,
                                      int att_id,
                                      const PointCloudEncoder *encoder,
                                      const TransformT &transform) {
+  if (method == MESH_PREDICTION_GEOMETRIC_TANGENT) {
+    return CreateMeshPredictionSchemeGeometricTangentEncoder<DataTypeT>(
+        att_id, encoder, transform);
+  }
   if (method == MESH_PREDICTION_TEX_COORDS_LAPLACIAN) {
 #ifdef DRACO_UV_LAPLACIAN
     return CreateMeshPredictionSchemeTexCoordsLaplacianEncoder<DataTypeT>(

@@ -56,6 +56,7 @@ EVAL = 'draco_ext/eval'
 SCHEME_FAMILIES = {
     'weighted': {COMMON},
     'laplacian': {COMMON, LINALG},
+    'tangent': {COMMON},
 }
 SCHEMES = {f'prediction_schemes/{name}' for name in SCHEME_FAMILIES} | {SEAMS}
 

@@ -1,0 +1,146 @@
+// Copyright 2026 The draco-uv Authors.
+//
+// Licensed under the Apache License, Version 2.0 (the "License");
+// you may not use this file except in compliance with the License.
+// You may obtain a copy of the License at
+//
+//      http://www.apache.org/licenses/LICENSE-2.0
+//
+// Unless required by applicable law or agreed to in writing, software
+// distributed under the License is distributed on an "AS IS" BASIS,
+// WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+// See the License for the specific language governing permissions and
+// limitations under the License.
+//
+// Decoder of MESH_PREDICTION_GEOMETRIC_TANGENT (see the encoder).
+#ifndef PREDICTION_SCHEMES_TANGENT_MESH_PREDICTION_SCHEME_GEOMETRIC_TANGENT_DECODER_H_
+#define PREDICTION_SCHEMES_TANGENT_MESH_PREDICTION_SCHEME_GEOMETRIC_TANGENT_DECODER_H_
+
+#include <algorithm>
+#include <type_traits>
+
+#include "draco/compression/attributes/prediction_schemes/mesh_prediction_scheme_decoder.h"
+#include "draco_ext/common/uv_bitstream_guard.h"
+#include "draco_ext/common/uv_residual_coder.h"
+#include "prediction_schemes/tangent/mesh_prediction_scheme_geometric_tangent_shared.h"
+
+namespace draco {
+
+// Decodes tangents written by MeshPredictionSchemeGeometricTangentEncoder:
+// checks the guard, the format version and the configuration, reads the
+// residual streams and the transform data, then rebuilds every entry in
+// the encoder's order from the same integer predictions.
+// Treats its input as hostile: a wrong guard, version or configuration,
+// non-zero Draco corrections, exhausted streams, a decoded value outside
+// the grid, parents of the wrong shape or anything but 4 components fail;
+// out-of-range parent values only weaken the predictions
+// (tangent_geometry.h bounds every product).
+template <typename DataTypeT, class TransformT, class MeshDataT>
+class MeshPredictionSchemeGeometricTangentDecoder
+    : public MeshPredictionSchemeDecoder<DataTypeT, TransformT, MeshDataT> {
+  static_assert(std::is_same<DataTypeT, int32_t>::value,
+                "Draco decodes integer attributes as int32_t.");
+
+ public:
+  using CorrType = typename MeshPredictionSchemeDecoder<DataTypeT, TransformT,
+                                                        MeshDataT>::CorrType;
+  MeshPredictionSchemeGeometricTangentDecoder(const PointAttribute *attribute,
+                                              const TransformT &transform,
+                                              const MeshDataT &mesh_data)
+      : MeshPredictionSchemeDecoder<DataTypeT, TransformT, MeshDataT>(
+            attribute, transform, mesh_data) {}
+
+  bool ComputeOriginalValues(const CorrType *in_corr, DataTypeT *out_data,
+                             int size, int num_components,
+                             const PointIndex *entry_to_point_id_map) override;
+
+  bool DecodePredictionData(DecoderBuffer *buffer) override {
+    uint8_t version;
+    if (!DecodeUvBitstreamGuard(buffer) || !buffer->Decode(&version) ||
+        version != kGeometricTangentFormatVersion ||
+        !config_.Decode(buffer) ||
+        !residuals_.Decode(NumEntries() * kTangentNumComponents, buffer)) {
+      return false;
+    }
+    return MeshPredictionSchemeDecoder<DataTypeT, TransformT,
+                                       MeshDataT>::DecodePredictionData(buffer);
+  }
+
+  PredictionSchemeMethod GetPredictionMethod() const override {
+    return MESH_PREDICTION_GEOMETRIC_TANGENT;
+  }
+  bool IsInitialized() const override {
+    return predictor_.IsInitialized() && this->mesh_data().IsInitialized();
+  }
+  int GetNumParentAttributes() const override {
+    return kGeometricTangentNumParents;
+  }
+  GeometryAttribute::Type GetParentAttributeType(int i) const override {
+    return GeometricTangentParentType(i);
+  }
+  bool SetParentAttribute(const PointAttribute *att) override {
+    return predictor_.SetParentAttribute(att);
+  }
+
+ private:
+  class Coder {
+   public:
+    Coder(UvResidualDecoder *residuals, int32_t max_value)
+        : residuals_(residuals), max_value_(max_value) {}
+    bool Value(int context, int32_t predicted, int32_t sign, int32_t *value) {
+      int32_t residual;
+      if (!residuals_->Next(context, &residual)) {
+        return false;
+      }
+      const int64_t result = int64_t{predicted} + int64_t{sign} * residual;
+      if (result < 0 || result > max_value_) {
+        return false;
+      }
+      *value = static_cast<int32_t>(result);
+      return true;
+    }
+    bool Handedness(int context, const std::array<int32_t, 2> &predicted,
+                    int32_t *w) {
+      int32_t symbol;
+      return residuals_->Next(context, &symbol) &&
+             HandednessFromSymbol(symbol, predicted, max_value_, w);
+    }
+
+   private:
+    UvResidualDecoder *residuals_;
+    int32_t max_value_;
+  };
+
+  int NumEntries() const {
+    return static_cast<int>(this->mesh_data().data_to_corner_map()->size());
+  }
+
+  GeometricTangentPredictor<MeshDataT> predictor_;
+  UvResidualDecoder residuals_{kTangentNumContexts};
+  GeometricTangentConfig config_;
+};
+
+template <typename DataTypeT, class TransformT, class MeshDataT>
+bool MeshPredictionSchemeGeometricTangentDecoder<DataTypeT, TransformT,
+                                                 MeshDataT>::
+    ComputeOriginalValues(const CorrType *in_corr, DataTypeT *out_data,
+                          int size, int num_components,
+                          const PointIndex * /* entry_to_point_id_map */) {
+  if (num_components != kTangentNumComponents ||
+      size != NumEntries() * kTangentNumComponents ||
+      std::any_of(in_corr, in_corr + size,
+                  [](CorrType c) { return c != CorrType(0); })) {
+    return false;
+  }
+  predictor_.ComputeSums(this->mesh_data(), config_.kind,
+                         config_.normal_bits);
+  Coder coder(&residuals_, config_.coding.grid.max_value);
+  return CodeGeometricTangents(
+      this->mesh_data(), config_.coding,
+      [&](int entry) { return predictor_.Predict(this->mesh_data(), entry); },
+      &coder, reinterpret_cast<int32_t *>(out_data));
+}
+
+}  // namespace draco
+
+#endif  // PREDICTION_SCHEMES_TANGENT_MESH_PREDICTION_SCHEME_GEOMETRIC_TANGENT_DECODER_H_

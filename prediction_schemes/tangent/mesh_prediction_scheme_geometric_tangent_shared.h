@@ -1,0 +1,194 @@
+// Copyright 2026 The draco-uv Authors.
+//
+// Licensed under the Apache License, Version 2.0 (the "License");
+// you may not use this file except in compliance with the License.
+// You may obtain a copy of the License at
+//
+//      http://www.apache.org/licenses/LICENSE-2.0
+//
+// Unless required by applicable law or agreed to in writing, software
+// distributed under the License is distributed on an "AS IS" BASIS,
+// WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+// See the License for the specific language governing permissions and
+// limitations under the License.
+//
+// What the encoder and the decoder of MESH_PREDICTION_GEOMETRIC_TANGENT
+// share: the format, the parents, and the loop that codes every entry.
+#ifndef PREDICTION_SCHEMES_TANGENT_MESH_PREDICTION_SCHEME_GEOMETRIC_TANGENT_SHARED_H_
+#define PREDICTION_SCHEMES_TANGENT_MESH_PREDICTION_SCHEME_GEOMETRIC_TANGENT_SHARED_H_
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "draco/attributes/geometry_attribute.h"
+#include "prediction_schemes/tangent/geometric_tangent_coder.h"
+#include "prediction_schemes/tangent/geometric_tangent_predictor.h"
+#include "prediction_schemes/tangent/geometric_tangent_settings.h"
+
+namespace draco {
+
+// Version of the scheme's prediction data; decoders reject other values.
+constexpr uint8_t kGeometricTangentFormatVersion = 1;
+// x, y, z and the handedness w.
+constexpr int kTangentNumComponents = 4;
+
+// The parents, in the order Draco asks for them.
+inline GeometryAttribute::Type GeometricTangentParentType(int i) {
+  constexpr GeometryAttribute::Type kParents[] = {
+      GeometryAttribute::POSITION, GeometryAttribute::NORMAL,
+      GeometryAttribute::TEX_COORD};
+  return kParents[i];
+}
+constexpr int kGeometricTangentNumParents = 3;
+
+// Per-attribute choices the encoder makes and the decoder reads.
+struct GeometricTangentConfig {
+  GeometricTangentKind kind = GeometricTangentKind::kMikkTSpace;
+  TangentCodingParameters coding;
+  // Which TEX_COORD attribute the tangent follows (glTF: the normal
+  // texture's texCoord). Draco hands a scheme the first attribute of each
+  // parent type, so this format requires 0.
+  int tex_coord_index = 0;
+  // Octahedral bits of the normals (Draco's normal quantisation).
+  int normal_bits = 0;
+
+  void Encode(EncoderBuffer *buffer) const {
+    buffer->Encode(static_cast<uint8_t>(
+        static_cast<uint8_t>(kind) | (coding.flip_handedness ? 4 : 0)));
+    EncodeVarint<uint32_t>(static_cast<uint32_t>(tex_coord_index), buffer);
+    buffer->Encode(static_cast<uint8_t>(normal_bits));
+    buffer->Encode(static_cast<uint16_t>(coding.shift_gain));
+    buffer->Encode(coding.neighbour_thresholds[0]);
+    buffer->Encode(coding.neighbour_thresholds[1]);
+    coding.grid.Encode(buffer);
+  }
+  // False for values no encoder writes.
+  bool Decode(DecoderBuffer *buffer) {
+    uint8_t byte, bits;
+    uint32_t index;
+    uint16_t gain;
+    if (!buffer->Decode(&byte) || (byte & 3) >= kNumGeometricTangentKinds ||
+        byte > 7 || !DecodeVarint(&index, buffer) || index != 0 ||
+        !buffer->Decode(&bits) || bits < 2 || bits > 30 ||
+        !buffer->Decode(&gain) || gain > 256 ||
+        !buffer->Decode(&coding.neighbour_thresholds[0]) ||
+        !buffer->Decode(&coding.neighbour_thresholds[1]) ||
+        coding.neighbour_thresholds[0] > coding.neighbour_thresholds[1] ||
+        !coding.grid.Decode(buffer)) {
+      return false;
+    }
+    kind = static_cast<GeometricTangentKind>(byte & 3);
+    coding.flip_handedness = (byte & 4) != 0;
+    tex_coord_index = 0;
+    normal_bits = bits;
+    coding.shift_gain = gain;
+    return true;
+  }
+};
+
+// Codes (encodes or decodes, by CoderT) the |values| (4 per entry, in
+// entry order) of every entry of |mesh_data| with the predictions
+// |predict|(entry) returns. CoderT has
+//   bool Value(int context, int32_t predicted, int32_t sign, int32_t *value);
+//   bool Handedness(int context, const std::array<int32_t, 2> &predicted,
+//                   int32_t *w);
+// (the encoder reads *value and *w, the decoder writes them; Value() codes
+// sign * (value - predicted), Handedness() HandednessSymbol()).
+// Entries without a prediction code every component against a coded
+// neighbour's value (else the previous entry's, else the zero tangent);
+// entries predicted from one triangle that already gave a coded neighbour
+// its value code every component against that value. |neighbour_sums|,
+// when not null, receives every entry's TangentNeighbourSum().
+template <class MeshDataT, class PredictFn, class CoderT>
+bool CodeGeometricTangents(const MeshDataT &mesh_data,
+                           const TangentCodingParameters &params,
+                           PredictFn predict, CoderT *coder, int32_t *values,
+                           std::vector<int8_t> *neighbour_sums = nullptr) {
+  const auto *const table = mesh_data.corner_table();
+  const auto &vertex_to_data = *mesh_data.vertex_to_data_map();
+  const int num_entries =
+      static_cast<int>(mesh_data.data_to_corner_map()->size());
+  std::vector<int8_t> first_bits(num_entries, -1);
+  std::vector<int32_t> single_face(num_entries, -1);
+  // The entry at the vertex of |corner| if it is coded before |entry|.
+  const auto coded_neighbour = [&](CornerIndex corner, int entry) {
+    if (corner == kInvalidCornerIndex) {
+      return -1;
+    }
+    const int vertex = table->Vertex(corner).value();
+    const int data = vertex >= 0 && vertex < static_cast<int>(vertex_to_data.size())
+                         ? vertex_to_data[vertex]
+                         : -1;
+    return data >= 0 && data < entry ? data : -1;
+  };
+  TangentComponentPredictor components(params);
+  for (int entry = 0; entry < num_entries; ++entry) {
+    int32_t *const v = values + kTangentNumComponents * entry;
+    const CornerIndex corner(mesh_data.data_to_corner_map()->at(entry));
+    const int left = coded_neighbour(table->Next(corner), entry);
+    const int right = coded_neighbour(table->Previous(corner), entry);
+    const GeometricTangentPrediction prediction = predict(entry);
+    single_face[entry] = prediction.single_face;
+    int source = -1;
+    int context = kTangentFallbackContext;
+    if (!prediction.valid) {
+      source = left >= 0 ? left : (right >= 0 ? right : entry - 1);
+    } else if (prediction.single_face >= 0) {
+      for (const int n : {left, right}) {
+        if (n >= 0 && single_face[n] == prediction.single_face) {
+          source = n;
+          context = kTangentCopyContext;
+          break;
+        }
+      }
+    }
+    if (!prediction.valid || context == kTangentCopyContext) {
+      for (int c = 0; c < kTangentNumComponents; ++c) {
+        const int32_t predicted =
+            source >= 0 ? values[kTangentNumComponents * source + c]
+                        : params.grid.Round(params.grid.Coordinate(
+                              c, c == 3 ? kTangentUnit : 0));
+        if (!coder->Value(context, predicted, 1, &v[c])) {
+          return false;
+        }
+      }
+      first_bits[entry] = 0;
+      continue;
+    }
+    const int neighbour_sum =
+        TangentNeighbourSum(left >= 0 ? first_bits[left] : -1,
+                            right >= 0 ? first_bits[right] : -1);
+    if (neighbour_sums != nullptr) {
+      (*neighbour_sums)[entry] = static_cast<int8_t>(neighbour_sum);
+    }
+    const int neighbour_class = TangentNeighbourClass(neighbour_sum, params);
+    components.Begin(prediction);
+    for (int step = 0; step < 3; ++step) {
+      const int axis = components.Axis(step);
+      const TangentPredictedValue predicted = components.Predict(step, v);
+      const int context =
+          step == 0 ? kTangentFirstContext + 2 * neighbour_class +
+                          predicted.fraction_class
+          : step == 1 ? kTangentSecondContext + 2 * (neighbour_class > 0) +
+                            predicted.fraction_class
+                      : kTangentThirdContext + predicted.fraction_class;
+      if (!coder->Value(context, predicted.value, predicted.sign, &v[axis])) {
+        return false;
+      }
+      if (step == 0) {
+        first_bits[entry] = static_cast<int8_t>(std::min(
+            7, BitLength(AbsAsUnsigned(int64_t{v[axis]} - predicted.value))));
+      }
+    }
+    if (!coder->Handedness(kTangentHandednessContext,
+                           components.PredictHandedness(), &v[3])) {
+      return false;
+    }
+  }
+  return true;
+}
+
+}  // namespace draco
+
+#endif  // PREDICTION_SCHEMES_TANGENT_MESH_PREDICTION_SCHEME_GEOMETRIC_TANGENT_SHARED_H_
