@@ -128,6 +128,8 @@ list(
          "${draco_uv_ext}/common/uv_rmse.h"
          "${draco_uv_schemes}/laplacian/uv_laplacian_settings.cc"
          "${draco_uv_schemes}/laplacian/uv_laplacian_settings.h"
+         "${draco_uv_ext}/options/draco_uv_flags.cc"
+         "${draco_uv_ext}/options/draco_uv_flags.h"
          "${draco_uv_ext}/options/uv_compression_options.cc"
          "${draco_uv_ext}/options/uv_compression_options.h"
          "${draco_uv_ext}/options/uv_configure.cc"

@@ -17,11 +17,16 @@
 // ParseUvCompressionFlag() read -uv_pred, -uv_seams, -uv_anchors and the
 // error target (-uv_rmse, -uv_texels, -uv_texture_size) into a
 // UvCompressionOptions, UvCompressionUsage() is their help text, and
-// ConfigureUvCompression() applies them to draco_encoder's ExpertEncoder. A
-// new flag changes none of the patches.
+// ConfigureUvCompression() applies them to draco_encoder's ExpertEncoder.
+// CheckUnhandledToolArg(), the last branch of both tools' argument loops,
+// takes what no flag took: a flag that looks like draco-uv's is an error
+// that names the closest one (-uv_prd: "did you mean -uv_pred?"), another
+// flag is ignored with a warning, anything else silently, as in stock Draco.
+// A new flag changes none of the patches (one entry of DracoUvFlagNames()).
 #ifndef DRACO_EXT_HOOKS_TOOL_FLAGS_H_
 #define DRACO_EXT_HOOKS_TOOL_FLAGS_H_
 
+#include "draco_ext/options/draco_uv_flags.h"  // IWYU pragma: export
 #include "draco_ext/options/uv_compression_options.h"  // IWYU pragma: export
 #include "draco_ext/options/uv_configure.h"  // IWYU pragma: export
 

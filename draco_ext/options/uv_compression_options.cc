@@ -20,6 +20,7 @@
 #include <cstring>
 #include <utility>
 
+#include "draco_ext/options/draco_uv_flags.h"
 #include "prediction_schemes/laplacian/uv_laplacian_settings.h"
 
 #ifdef DRACO_TRANSCODER_SUPPORTED
@@ -340,7 +341,8 @@ std::string UvCompressionUsage() {
          "  -uv_texture_size <N>  texels of that texture (default 4096)\n"
          "  -uv_seams <name>      coding of attribute seams (needs -cl 5..10 "
          "to matter):\n" +
-         NameLines(std::begin(kSeamCodingNames), std::end(kSeamCodingNames));
+         NameLines(std::begin(kSeamCodingNames), std::end(kSeamCodingNames)) +
+         UnknownToolFlagUsage();
 }
 
 #ifdef DRACO_TRANSCODER_SUPPORTED

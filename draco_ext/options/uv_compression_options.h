@@ -190,7 +190,8 @@ bool IsUvCompressionFlag(const char *arg);
 Status ParseUvCompressionFlag(int argc, char **argv, int *index,
                               UvCompressionOptions *options);
 
-// Help text of the flags, one line per flag and value.
+// Help text of the flags, one line per flag and value, and the paragraph on
+// unknown flags (UnknownToolFlagUsage(), draco_uv_flags.h).
 std::string UvCompressionUsage();
 
 #ifdef DRACO_TRANSCODER_SUPPORTED
