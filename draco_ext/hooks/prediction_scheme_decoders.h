@@ -24,8 +24,8 @@
 #include <memory>
 
 #include "draco_ext/hooks/prediction_scheme_ids.h"
-#include "prediction_schemes/weighted/mesh_prediction_scheme_tex_coords_weighted_decoder.h"
 #include "prediction_schemes/tangent/mesh_prediction_scheme_geometric_tangent_decoder.h"
+#include "prediction_schemes/weighted/mesh_prediction_scheme_tex_coords_weighted_decoder.h"
 #ifdef DRACO_UV_LAPLACIAN
 #include "prediction_schemes/laplacian/mesh_prediction_scheme_tex_coords_laplacian_decoder.h"
 #endif

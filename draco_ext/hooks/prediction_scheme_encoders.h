@@ -26,8 +26,8 @@
 #include "draco/compression/attributes/prediction_schemes/prediction_scheme_factory.h"
 #include "draco/compression/mesh/mesh_encoder.h"
 #include "draco_ext/hooks/prediction_scheme_ids.h"
-#include "prediction_schemes/weighted/mesh_prediction_scheme_tex_coords_weighted_encoder.h"
 #include "prediction_schemes/tangent/mesh_prediction_scheme_geometric_tangent_encoder.h"
+#include "prediction_schemes/weighted/mesh_prediction_scheme_tex_coords_weighted_encoder.h"
 #ifdef DRACO_UV_LAPLACIAN
 #include "prediction_schemes/laplacian/mesh_prediction_scheme_tex_coords_laplacian_encoder.h"
 #endif
