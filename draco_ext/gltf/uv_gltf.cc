@@ -29,10 +29,7 @@
 namespace draco {
 
 bool UsesDracoUvScheme(const Mesh &mesh, const ExpertEncoder &encoder) {
-  for (int i = 0; i < mesh.NumNamedAttributes(GeometryAttribute::TEX_COORD);
-       ++i) {
-    const int att_id =
-        mesh.GetNamedAttributeId(GeometryAttribute::TEX_COORD, i);
+  for (int att_id = 0; att_id < mesh.num_attributes(); ++att_id) {
     const int method = encoder.options().GetAttributeInt(
         att_id, "prediction_scheme", PREDICTION_UNDEFINED);
     if (IsDracoUvPredictionMethod(
@@ -61,13 +58,13 @@ Status KeepDracoUvOnlyIfItPaysForTheExtension(const Mesh &mesh,
   }
   DRACO_ASSIGN_OR_RETURN(const size_t chosen_size, EncodedSize(encoder));
   std::vector<std::pair<int, int>> chosen_methods;
-  for (int i = 0; i < mesh.NumNamedAttributes(GeometryAttribute::TEX_COORD);
-       ++i) {
-    const int att_id =
-        mesh.GetNamedAttributeId(GeometryAttribute::TEX_COORD, i);
-    chosen_methods.emplace_back(
-        att_id, encoder->options().GetAttributeInt(att_id, "prediction_scheme",
-                                                   PREDICTION_UNDEFINED));
+  for (int att_id = 0; att_id < mesh.num_attributes(); ++att_id) {
+    const int method = encoder->options().GetAttributeInt(
+        att_id, "prediction_scheme", PREDICTION_UNDEFINED);
+    if (!IsDracoUvPredictionMethod(method)) {
+      continue;
+    }
+    chosen_methods.emplace_back(att_id, method);
     DRACO_RETURN_IF_ERROR(
         encoder->SetAttributePredictionScheme(att_id, PREDICTION_UNDEFINED));
   }
@@ -94,7 +91,8 @@ Status ConfigureUvCompressionForGltf(
   // are for command-line tools; a library stays quiet.
   DRACO_RETURN_IF_ERROR(
       ConfigureUvCompression(options, &mesh, &encoder).status());
-  if (options.ChoosesPrediction() &&
+  if ((options.ChoosesPrediction() ||
+       options.tangent.prediction == TangentPrediction::kAuto) &&
       extensions_required->count(kUvGltfExtension) == 0) {
     DRACO_RETURN_IF_ERROR(
         KeepDracoUvOnlyIfItPaysForTheExtension(mesh, &encoder));

@@ -32,8 +32,9 @@
 
 namespace draco {
 
-// True when |encoder| is set to code a TEX_COORD attribute of |mesh| with a
-// draco-uv scheme, i.e. when its output needs a decoder with draco-uv.
+// True when |encoder| is set to code an attribute of |mesh| (texture
+// coordinates, tangents) with a draco-uv scheme, i.e. when its output needs
+// a decoder with draco-uv.
 bool UsesDracoUvScheme(const Mesh &mesh, const ExpertEncoder &encoder);
 
 // -uv_pred auto on a primitive of a glTF file that does not list
@@ -41,7 +42,7 @@ bool UsesDracoUvScheme(const Mesh &mesh, const ExpertEncoder &encoder);
 // ConfigureUvCompression(): when |encoder| would write draco-uv prediction
 // ids with stock seams, keeps them only if they save more bytes than naming
 // the extension adds to the file (kUvGltfExtensionJsonBytes), else sets every
-// TEX_COORD attribute back to Draco's own prediction, so that auto never
+// attribute back to Draco's own prediction, so that auto never
 // makes a file bigger than stock coding. With context seams the primitive
 // needs the extension anyway and |encoder| is left as it is. Once a
 // primitive keeps draco-uv ids, later primitives of the file ride on the

@@ -98,7 +98,8 @@ std::string FlagList(const std::vector<const char *> &flags) {
 }  // namespace
 
 const std::vector<const char *> &DracoUvFlagNames() {
-  // One line per flag; uv_compression_options.h parses the -uv_ ones.
+  // One line per flag; uv_compression_options.h parses the -uv_ ones,
+  // tangent_compression_options.h the tangent ones.
   static const std::vector<const char *> flags = {
       "-uv_pred",          // TEX_COORD prediction scheme
       "-uv_anchors",       // extra anchors of -uv_pred laplacian_*
@@ -106,6 +107,8 @@ const std::vector<const char *> &DracoUvFlagNames() {
       "-uv_texels",        // error target in texels
       "-uv_texture_size",  // texels of -uv_texels' texture
       "-uv_seams",         // attribute seam coding
+      "-tangent_pred",     // tangent prediction scheme
+      "-qtg",              // tangent quantization (draco_encoder)
   };
   return flags;
 }

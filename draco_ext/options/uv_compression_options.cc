@@ -280,7 +280,7 @@ Status CheckUvCompressionOptions(const UvCompressionOptions &options) {
         "-uv_anchors needs -uv_pred laplacian_tutte, laplacian_cotan or "
         "laplacian_mv.");
   }
-  return OkStatus();
+  return CheckTangentCompressionOptions(options.tangent);
 }
 
 bool IsUvCompressionFlag(const char *arg) {
@@ -289,7 +289,8 @@ bool IsUvCompressionFlag(const char *arg) {
          std::strcmp(arg, kAnchorsFlag) == 0 ||
          std::strcmp(arg, kRmseFlag) == 0 ||
          std::strcmp(arg, kTexelsFlag) == 0 ||
-         std::strcmp(arg, kTextureSizeFlag) == 0;
+         std::strcmp(arg, kTextureSizeFlag) == 0 ||
+         IsTangentCompressionFlag(arg);
 }
 
 Status ParseUvCompressionFlag(int argc, char **argv, int *index,
@@ -299,6 +300,9 @@ Status ParseUvCompressionFlag(int argc, char **argv, int *index,
     return ErrorStatus(flag + " needs a value.");
   }
   const std::string value = argv[++*index];
+  if (IsTangentCompressionFlag(flag.c_str())) {
+    return ParseTangentCompressionFlag(flag, value, &options->tangent);
+  }
   if (flag == kSeamsFlag) {
     DRACO_ASSIGN_OR_RETURN(options->seams, ParseUvSeamCodingName(value));
   } else if (flag == kAnchorsFlag) {
@@ -342,7 +346,7 @@ std::string UvCompressionUsage() {
          "  -uv_seams <name>      coding of attribute seams (needs -cl 5..10 "
          "to matter):\n" +
          NameLines(std::begin(kSeamCodingNames), std::end(kSeamCodingNames)) +
-         UnknownToolFlagUsage();
+         TangentCompressionUsage() + UnknownToolFlagUsage();
 }
 
 #ifdef DRACO_TRANSCODER_SUPPORTED

@@ -43,6 +43,8 @@
 //                       (eq. 9, UV units) is at most R (uv_error_target.h)
 //   -uv_texels T        the same target as RMSE T / N, in texels of a
 //   -uv_texture_size N  texture of N texels (default 4096)
+//   -tangent_pred, -qtg the mesh's tangents (TangentCompressionOptions,
+//                       tangent_compression_options.h)
 //
 // Draco's compression options header includes this one (patches/0008), so
 // it depends on nothing but Draco's status and compression ids.
@@ -58,6 +60,7 @@
 #include "draco/core/status.h"
 #include "draco/core/status_or.h"
 #include "draco/draco_features.h"
+#include "draco_ext/options/tangent_compression_options.h"
 
 namespace draco {
 
@@ -102,6 +105,8 @@ struct UvCompressionOptions {
   std::optional<double> rmse;
   std::optional<double> texels;
   std::optional<int> texture_size;
+  // How the mesh's tangents are coded (they follow from the UVs).
+  TangentCompressionOptions tangent;
 
   // The error target in UV units, if one is set.
   std::optional<double> MaxUvRmse() const {
@@ -119,12 +124,14 @@ struct UvCompressionOptions {
   // True when no draco-uv feature is requested.
   bool IsStock() const {
     return prediction == UvPrediction::kDraco &&
-           seams == UvSeamCoding::kDraco && !MaxUvRmse().has_value();
+           seams == UvSeamCoding::kDraco && !MaxUvRmse().has_value() &&
+           tangent.IsStock();
   }
   bool operator==(const UvCompressionOptions &other) const {
     return prediction == other.prediction && seams == other.seams &&
            anchors == other.anchors && rmse == other.rmse &&
-           texels == other.texels && texture_size == other.texture_size;
+           texels == other.texels && texture_size == other.texture_size &&
+           tangent == other.tangent;
   }
 
   bool operator!=(const UvCompressionOptions &other) const {
@@ -177,8 +184,9 @@ StatusOr<double> ParseUvErrorTarget(const std::string &flag,
 // The options on their own: -uv_anchors only with a Laplacian -uv_pred, a
 // Laplacian -uv_pred only in a build with the Laplacian coder, at most one
 // of -uv_rmse and -uv_texels, each finite and positive, and
-// -uv_texture_size only with -uv_texels. Every entry point checks this
-// before it encodes.
+// -uv_texture_size only with -uv_texels, and the tangent options
+// (CheckTangentCompressionOptions()). Every entry point checks this before
+// it encodes.
 Status CheckUvCompressionOptions(const UvCompressionOptions &options);
 
 // True when |arg| is one of draco-uv's command-line flags.

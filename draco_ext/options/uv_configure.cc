@@ -17,6 +17,7 @@
 #include "draco_ext/options/uv_error_target.h"
 #include "draco_ext/options/uv_prediction_options.h"
 #include "draco_ext/options/uv_seam_options.h"
+#include "draco_ext/options/tangent_prediction_options.h"
 
 namespace draco {
 
@@ -50,32 +51,37 @@ StatusOr<std::string> ConfigureUvCompression(
   DRACO_RETURN_IF_ERROR(CheckUvCompressionOptions(options));
   DRACO_ASSIGN_OR_RETURN(const std::string seams,
                          ConfigureUvSeams(options.seams, mesh, encoder));
+  std::string summary = seams;
   if (!options.MaxUvRmse().has_value()) {
     DRACO_ASSIGN_OR_RETURN(const std::string prediction,
                            ConfigureUvPrediction(options, mesh, encoder));
-    return seams + prediction;
-  }
-  if (mesh == nullptr) {
-    return ErrorTargetNeedsMesh();
-  }
-  std::string summary = seams;
-  for (int i = 0; i < mesh->NumNamedAttributes(GeometryAttribute::TEX_COORD);
-       ++i) {
-    DRACO_ASSIGN_OR_RETURN(
-        const std::string prediction,
-        ConfigureUvErrorTarget(
-            options, *mesh,
-            mesh->GetNamedAttributeId(GeometryAttribute::TEX_COORD, i),
-            encoder));
     summary += prediction;
+  } else if (mesh == nullptr) {
+    return ErrorTargetNeedsMesh();
+  } else {
+    for (int i = 0;
+         i < mesh->NumNamedAttributes(GeometryAttribute::TEX_COORD); ++i) {
+      DRACO_ASSIGN_OR_RETURN(
+          const std::string prediction,
+          ConfigureUvErrorTarget(
+              options, *mesh,
+              mesh->GetNamedAttributeId(GeometryAttribute::TEX_COORD, i),
+              encoder));
+      summary += prediction;
+    }
   }
-  return summary;
+  // Last: the tangents' prediction must know how the UVs are coded.
+  DRACO_ASSIGN_OR_RETURN(
+      const std::string tangents,
+      ConfigureTangentPrediction(options.tangent, mesh, encoder));
+  return summary + tangents;
 }
 
 StatusOr<std::string> ConfigureUvCompression(
     const std::map<int, UvCompressionOptions> &per_attribute,
     const Mesh *mesh, ExpertEncoder *encoder) {
   UvSeamCoding seam_coding = UvSeamCoding::kDraco;
+  TangentCompressionOptions tangent;
   for (const auto &[att_id, options] : per_attribute) {
     DRACO_RETURN_IF_ERROR(CheckUvCompressionOptions(options));
     if (mesh != nullptr &&
@@ -89,6 +95,9 @@ StatusOr<std::string> ConfigureUvCompression(
     if (options.seams != UvSeamCoding::kDraco) {
       seam_coding = options.seams;
     }
+    if (!options.tangent.IsStock()) {
+      tangent = options.tangent;
+    }
   }
   DRACO_ASSIGN_OR_RETURN(std::string summary,
                          ConfigureUvSeams(seam_coding, mesh, encoder));
@@ -98,7 +107,9 @@ StatusOr<std::string> ConfigureUvCompression(
         ConfigurePredictionOf(options, mesh, att_id, encoder));
     summary += prediction;
   }
-  return summary;
+  DRACO_ASSIGN_OR_RETURN(const std::string tangents,
+                         ConfigureTangentPrediction(tangent, mesh, encoder));
+  return summary + tangents;
 }
 
 }  // namespace draco

@@ -33,8 +33,10 @@ namespace draco {
 // Checks |options| (CheckUvCompressionOptions()) and applies them to
 // |encoder|, which encodes |mesh| (null for a point cloud) and whose other
 // options must already be set: first the seam coding, then the prediction
-// of every TEX_COORD attribute with its Laplacian settings, in that order
-// because -uv_pred auto measures candidates with the chosen seam coding.
+// of every TEX_COORD attribute with its Laplacian settings, then that of
+// the tangents (options.tangent), in that order because -uv_pred auto
+// measures candidates with the chosen seam coding and the tangents'
+// prediction must know how the UVs are coded.
 // Stock options leave |encoder| untouched. Returns the per-attribute
 // summary lines for command-line tools ("" when nothing changed).
 StatusOr<std::string> ConfigureUvCompression(
@@ -46,7 +48,9 @@ StatusOr<std::string> ConfigureUvCompression(
 // without an entry keep stock prediction. Each entry is checked, then the
 // seams are coded with context when any entry asks for it (Edgebreaker codes
 // the seams of all attributes together), then each attribute's prediction is
-// applied in attribute order. An empty map leaves |encoder| untouched.
+// applied in attribute order, then the tangent options of the last entry
+// that has any apply to the mesh's tangents. An empty map leaves |encoder|
+// untouched.
 StatusOr<std::string> ConfigureUvCompression(
     const std::map<int, UvCompressionOptions> &per_attribute,
     const Mesh *mesh, ExpertEncoder *encoder);

@@ -1,0 +1,212 @@
+// Copyright 2026 The draco-uv Authors.
+//
+// Licensed under the Apache License, Version 2.0 (the "License");
+// you may not use this file except in compliance with the License.
+// You may obtain a copy of the License at
+//
+//      http://www.apache.org/licenses/LICENSE-2.0
+//
+// Unless required by applicable law or agreed to in writing, software
+// distributed under the License is distributed on an "AS IS" BASIS,
+// WITHOUT WARRANTIES OR CONDITIONS OF ANY KIND, either express or implied.
+// See the License for the specific language governing permissions and
+// limitations under the License.
+#include "draco_ext/options/tangent_prediction_options.h"
+
+#include <filesystem>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "draco/core/draco_test_base.h"
+#include "draco/point_cloud/point_cloud.h"
+#include "draco_ext/options/uv_encode_settings.h"
+#include "prediction_schemes/tangent/geometric_tangent_settings.h"
+#include "tests/draco_uv_test_utils.h"
+
+namespace draco {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::unique_ptr<Mesh> Spot() {
+  auto mesh = ReadTestMesh(UvTestdataPath("crane_spot_tangents.glb"));
+  EXPECT_TRUE(mesh.ok());
+  return std::move(mesh).value();
+}
+
+int TangentId(const Mesh &mesh) {
+  return mesh.GetNamedAttributeId(GeometryAttribute::TANGENT);
+}
+
+// draco_encoder -qp 14 -qt 12 -cl |cl| [-uv_pred |uv|] -tangent_pred |name|
+// -qtg 8.
+UvEncodeSettings TangentSettings(const std::string &name, int cl = 7,
+                                 const std::string &uv = "") {
+  UvEncodeSettings settings = Settings(14, 12, cl, uv);
+  settings.uv.tangent.prediction = ParseTangentPredictionName(name).value();
+  settings.uv.tangent.quantization_bits = 8;
+  return settings;
+}
+
+struct Encoded {
+  std::vector<char> bytes;
+  std::string summary;
+};
+
+Encoded Encode(const Mesh &mesh, const UvEncodeSettings &settings) {
+  EncoderBuffer buffer;
+  Encoded result;
+  const Status status =
+      EncodeMeshWithSettings(mesh, settings, &buffer, &result.summary);
+  EXPECT_TRUE(status.ok()) << status.error_msg();
+  result.bytes.assign(buffer.data(), buffer.data() + buffer.size());
+  return result;
+}
+
+std::vector<std::string> TangentAssets() {
+  std::vector<std::string> paths = {
+      UvTestdataPath("small_torus_uv_tangents.glb"),
+      UvTestdataPath("small_cube_sphere_tangents.glb"),
+      UvTestdataPath("crane_spot_tangents.glb")};
+  const fs::path corpus = fs::path(CorpusDir()) / "gltf";
+  if (fs::is_directory(corpus)) {
+    for (const auto &entry : fs::directory_iterator(corpus)) {
+      if (entry.path().extension() == ".gltf") {
+        paths.push_back(entry.path().string());
+      }
+    }
+  }
+  return paths;
+}
+
+TEST(TangentPredictionOptionsTest, FindsTangentsByTypeAndByValues) {
+  const auto mesh = Spot();
+  EXPECT_EQ(TangentAttributeIds(*mesh), std::vector<int>{TangentId(*mesh)});
+  // As glTF-Transform hands them to Draco: GENERIC.
+  Mesh generic;
+  generic.Copy(*mesh);
+  PointAttribute *const tangents = generic.attribute(TangentId(*mesh));
+  tangents->set_attribute_type(GeometryAttribute::GENERIC);
+  const int id = TangentId(*mesh);
+  EXPECT_EQ(TangentAttributeIds(generic), std::vector<int>{id});
+  // A w that is not +-1 makes it something else.
+  float value[4];
+  tangents->GetValue(AttributeValueIndex(0), value);
+  value[3] = 0.5f;
+  tangents->SetAttributeValue(AttributeValueIndex(0), value);
+  EXPECT_TRUE(TangentAttributeIds(generic).empty());
+}
+
+// -tangent_pred auto is never bigger than stock coding and decodes to the
+// same values, on every asset.
+TEST(TangentPredictionOptionsTest, AutoIsNeverBiggerThanStock) {
+  for (const std::string &path : TangentAssets()) {
+    const auto mesh = ReadTestMesh(path);
+    ASSERT_TRUE(mesh.ok()) << path;
+    const Encoded stock = Encode(*mesh.value(), TangentSettings("draco"));
+    const Encoded chosen = Encode(*mesh.value(), TangentSettings("auto"));
+    EXPECT_LE(chosen.bytes.size(), stock.bytes.size()) << path;
+    EXPECT_NE(chosen.summary.find("Tangent prediction (auto)"),
+              std::string::npos)
+        << chosen.summary;
+    const auto a = DecodeDracoMesh(stock.bytes);
+    const auto b = DecodeDracoMesh(chosen.bytes);
+    ASSERT_TRUE(a.ok() && b.ok()) << path;
+    EXPECT_EQ(CornerValues(*a.value(), GeometryAttribute::GENERIC),
+              CornerValues(*b.value(), GeometryAttribute::GENERIC))
+        << path;
+  }
+}
+
+TEST(TangentPredictionOptionsTest, ExplicitNamesSetTheGeometricScheme) {
+  const auto mesh = Spot();
+  const Encoded stock = Encode(*mesh, TangentSettings("draco"));
+  for (const char *name : {"mikktspace", "uniform", "face", "geometric"}) {
+    const Encoded ours = Encode(*mesh, TangentSettings(name));
+    EXPECT_NE(ours.summary.find(std::string("-> ") + name),
+              std::string::npos)
+        << ours.summary;
+    const auto a = DecodeDracoMesh(stock.bytes);
+    const auto b = DecodeDracoMesh(ours.bytes);
+    ASSERT_TRUE(b.ok()) << name;
+    EXPECT_EQ(CornerValues(*a.value(), GeometryAttribute::GENERIC),
+              CornerValues(*b.value(), GeometryAttribute::GENERIC))
+        << name;
+  }
+}
+
+// Where the prediction could not read exact inputs, the encoder keeps
+// stock coding, says why, and writes exactly the stock file.
+TEST(TangentPredictionOptionsTest, KeepsStockCodingWhereInputsAreNotExact) {
+  const auto spot = Spot();
+  Mesh no_normals;
+  no_normals.Copy(*spot);
+  no_normals.DeleteAttribute(
+      no_normals.GetNamedAttributeId(GeometryAttribute::NORMAL));
+  Mesh nan_normal;
+  nan_normal.Copy(*spot);
+  const float nan[3] = {std::numeric_limits<float>::quiet_NaN(), 0, 1};
+  nan_normal.attribute(nan_normal.GetNamedAttributeId(GeometryAttribute::NORMAL))
+      ->SetAttributeValue(AttributeValueIndex(5), nan);
+  struct Case {
+    const Mesh *mesh;
+    int cl;
+    std::string uv;
+    std::string why;
+  };
+  const Case cases[] = {
+      {spot.get(), 3, "", "-cl 5 or higher"},
+      {spot.get(), 0, "", "Edgebreaker"},
+      {spot.get(), 7, "laplacian_mv", "coded lossily"},
+      {&no_normals, 7, "", "no NORMAL"},
+      {&nan_normal, 7, "", "NORMAL has NaN"},
+  };
+  for (const Case &c : cases) {
+    for (const char *name : {"auto", "mikktspace"}) {
+      const Encoded ours = Encode(*c.mesh, TangentSettings(name, c.cl, c.uv));
+      const Encoded stock = Encode(*c.mesh, TangentSettings("draco", c.cl, c.uv));
+      EXPECT_NE(ours.summary.find("keeps stock coding"), std::string::npos)
+          << ours.summary;
+      EXPECT_NE(ours.summary.find(c.why), std::string::npos) << ours.summary;
+      EXPECT_EQ(ours.bytes, stock.bytes) << c.why << " " << name;
+    }
+  }
+}
+
+// Draco cannot quantize them either: a clear error, not a crash.
+TEST(TangentPredictionOptionsTest, NonFiniteTangentsAreAnError) {
+  Mesh mesh;
+  mesh.Copy(*Spot());
+  const float inf[4] = {std::numeric_limits<float>::infinity(), 0, 0, 1};
+  mesh.attribute(TangentId(mesh))->SetAttributeValue(AttributeValueIndex(5),
+                                                     inf);
+  EncoderBuffer buffer;
+  const Status status =
+      EncodeMeshWithSettings(mesh, TangentSettings("auto"), &buffer);
+  EXPECT_FALSE(status.ok());
+  EXPECT_NE(std::string(status.error_msg()).find("NaN or infinite"),
+            std::string::npos)
+      << status.error_msg();
+}
+
+TEST(TangentPredictionOptionsTest, MeshesWithoutTangentsAreUntouched) {
+  const auto mesh = ReadTestMesh(UvTestdataPath("crane_spot.obj"));
+  ASSERT_TRUE(mesh.ok());
+  UvEncodeSettings settings = Settings(14, 12, 7, "");
+  const Encoded stock = Encode(*mesh.value(), settings);
+  settings.uv.tangent.prediction = TangentPrediction::kAuto;
+  const Encoded ours = Encode(*mesh.value(), settings);
+  EXPECT_EQ(ours.bytes, stock.bytes);
+  EXPECT_EQ(ours.summary, "");
+}
+
+TEST(TangentPredictionOptionsTest, PointCloudsAreAnError) {
+  ExpertEncoder encoder(*Spot());
+  TangentCompressionOptions options;
+  options.prediction = TangentPrediction::kAuto;
+  EXPECT_FALSE(ConfigureTangentPrediction(options, nullptr, &encoder).ok());
+}
+
+}  // namespace
+}  // namespace draco
