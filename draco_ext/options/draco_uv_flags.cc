@@ -108,7 +108,7 @@ const std::vector<const char *> &DracoUvFlagNames() {
       "-uv_texture_size",  // texels of -uv_texels' texture
       "-uv_seams",         // attribute seam coding
       "-tangent_pred",     // tangent prediction scheme
-      "-qtg",              // tangent quantization (draco_encoder)
+      "-tangent_bits",     // tangent quantization
   };
   return flags;
 }

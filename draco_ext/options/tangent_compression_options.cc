@@ -25,7 +25,7 @@ namespace draco {
 namespace {
 
 constexpr char kPredictionFlag[] = "-tangent_pred";
-constexpr char kBitsFlag[] = "-qtg";
+constexpr char kBitsFlag[] = "-tangent_bits";
 
 }  // namespace
 
@@ -138,7 +138,7 @@ std::string TangentCompressionUsage() {
     lines += line + entry.description + "\n";
   }
   return lines +
-         "  -qtg <bits>           quantization of tangent attributes "
+         "  -tangent_bits <bits>  quantization of tangent attributes "
          "(default with\n"
          "                          -tangent_pred: 8, like "
          "draco_transcoder)\n";

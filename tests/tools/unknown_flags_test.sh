@@ -2,7 +2,7 @@
 # Unknown flags in the patched draco_encoder and draco_transcoder
 # (draco_ext/options/draco_uv_flags.h):
 #  1. A flag that looks like draco-uv's but is not one of this build's
-#     (-uv_prd, -uvpred, --uv_pred, -uv_pred=auto, -tangent_pred, ...) exits
+#     (-uv_prd, -uvpred, --uv_pred, -uv_pred=auto, -tangent_prd, ...) exits
 #     non-zero with "Error: unknown flag ..." naming the closest flag, and
 #     writes no output file.
 #  2. Any other unknown flag (-foo, and the other tool's stock flags) prints
@@ -150,7 +150,7 @@ Warning: ignoring unknown flag -pred" -x -pred auto
   expect_error "${name}_after_foo" "${tool}" "${input}" "${out}" \
     "unknown flag -uv_prd; did you mean -uv_pred?" -foo -uv_prd auto
   # A flag of a family this build has no flag of: still an error.
-  for flag in -tangent_pred -tangent_prd --tangent_pred -uv_quality; do
+  for flag in -tangent_quality -tangent_prd --tangent_pred -uv_quality; do
     run "${name}_family" "${tool}" "${input}" "${out}" "${flag}" auto
     [[ $(status "${name}_family") -ne 0 ]] || fail "${name} ${flag}: exit 0"
     grep -q "^Error: unknown flag ${flag}; " "${work}/${name}_family.err" ||

@@ -134,8 +134,9 @@ TEST(DracoUvFlagsTest, FlagWithEqualsSuggestsFlagAndValue) {
 }
 
 TEST(DracoUvFlagsTest, FamilyFlagsAreOursWithoutAnEntry) {
-  // This build has no -tangent_* flag: still an error, never a stock file.
-  for (const char *arg : {"-tangent_pred", "--tangent_pred", "-tangent_x",
+  // Flags of the families that this build does not have: still an error,
+  // never a stock file.
+  for (const char *arg : {"-tangent_quality", "--tangent_x", "-tangent_x",
                           "-uv_quality", "-UV_Something_else"}) {
     const UnhandledToolArg verdict = Classify(arg);
     EXPECT_EQ(verdict.kind, UnhandledToolArg::kError) << arg;
@@ -143,7 +144,8 @@ TEST(DracoUvFlagsTest, FamilyFlagsAreOursWithoutAnEntry) {
     EXPECT_EQ(verdict.message,
               "unknown flag " + std::string(arg) +
                   "; this build's draco-uv flags are -uv_pred, -uv_anchors, "
-                  "-uv_rmse, -uv_texels, -uv_texture_size, -uv_seams.");
+                  "-uv_rmse, -uv_texels, -uv_texture_size, -uv_seams, "
+                  "-tangent_pred, -tangent_bits.");
   }
 }
 

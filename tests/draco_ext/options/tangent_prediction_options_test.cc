@@ -40,7 +40,7 @@ int TangentId(const Mesh &mesh) {
 }
 
 // draco_encoder -qp 14 -qt 12 -cl |cl| [-uv_pred |uv|] -tangent_pred |name|
-// -qtg 8.
+// -tangent_bits 8.
 UvEncodeSettings TangentSettings(const std::string &name, int cl = 7,
                                  const std::string &uv = "") {
   UvEncodeSettings settings = Settings(14, 12, cl, uv);
