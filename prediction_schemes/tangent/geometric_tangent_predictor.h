@@ -39,6 +39,48 @@
 
 namespace draco {
 
+// The integer components of a parent attribute by point. Read in place
+// where the attribute holds 4-byte integers (Draco's portable attributes:
+// int32 in the decoder, uint32 in the encoder, the same bits), else from a
+// copy converted once; either way a value costs one address computation
+// instead of PointAttribute::ConvertValue()'s type dispatch.
+template <int N>
+class TangentParentValues {
+ public:
+  void Init(const PointAttribute &att) {
+    att_ = &att;
+    copy_.clear();
+    if ((att.data_type() == DT_INT32 || att.data_type() == DT_UINT32) &&
+        att.byte_stride() >= static_cast<int64_t>(sizeof(int32_t) * N) &&
+        att.size() > 0) {
+      base_ = att.GetAddress(AttributeValueIndex(0));
+      stride_ = att.byte_stride();
+      return;
+    }
+    copy_.resize(att.size() * N);
+    for (AttributeValueIndex i(0); i < static_cast<uint32_t>(att.size()); ++i) {
+      int64_t value[N] = {};
+      att.ConvertValue(i, N, value);
+      for (int c = 0; c < N; ++c) {
+        copy_[N * i.value() + c] = static_cast<int32_t>(std::clamp<int64_t>(
+            value[c], INT32_MIN, INT32_MAX));
+      }
+    }
+    base_ = reinterpret_cast<const uint8_t *>(copy_.data());
+    stride_ = sizeof(int32_t) * N;
+  }
+  void Get(PointIndex point, int32_t *value) const {
+    std::memcpy(value, base_ + stride_ * att_->mapped_index(point).value(),
+                sizeof(int32_t) * N);
+  }
+
+ private:
+  const PointAttribute *att_ = nullptr;
+  const uint8_t *base_ = nullptr;
+  int64_t stride_ = 0;
+  std::vector<int32_t> copy_;
+};
+
 // What the predictor says about one tangent.
 struct GeometricTangentPrediction {
   // False when no triangle around the vertex has a UV gradient (all of them
@@ -130,6 +172,9 @@ class GeometricTangentPredictor {
     TangentVec3 direction = {0, 0, 0};
     TangentVec3 normal = {0, 0, 0};  // kFace only.
     int64_t orientation = 0;  // Sum of weight * orientation.
+    // Corners summed and the last one's face: counted for kFace, and for
+    // the others only in meshes where an entry could reach
+    // kTangentMaxCornersPerEntry.
     int32_t num_faces = 0;
     int32_t last_face = -1;
   };
@@ -142,76 +187,95 @@ class GeometricTangentPredictor {
     *slot = att;
     return true;
   }
-  // The value of |att| at |point|.
-  template <int N>
-  static std::array<int64_t, N> ValueAt(const PointAttribute &att,
-                                        PointIndex point) {
-    std::array<int64_t, N> value{};
-    const AttributeValueIndex index = att.mapped_index(point);
-    if (att.data_type() == DT_INT32) {
-      int32_t raw[N];
-      std::memcpy(raw, att.GetAddress(index), sizeof(raw));
-      for (int i = 0; i < N; ++i) {
-        value[i] = raw[i];
-      }
-    } else {
-      att.ConvertValue(index, N, value.data());
-    }
-    return value;
-  }
-  bool ComputeFace(const Mesh &mesh, FaceIndex face, Face *result) const;
+  bool ComputeFace(const Mesh::Face &points, Face *result) const;
+  // Adds |face| (of index |f|) to the |entries| of its corners (-1: none);
+  // with |count|, only to entries of fewer than kTangentMaxCornersPerEntry
+  // corners, and counting them.
+  template <bool count>
+  void AddFace(const Face &face, int f, const int32_t *entries);
 
   const PointAttribute *positions_ = nullptr;
   const PointAttribute *normals_ = nullptr;
   const PointAttribute *tex_coords_ = nullptr;
   GeometricTangentKind kind_ = GeometricTangentKind::kMikkTSpace;
   int normal_bits_ = 0;
+  TangentParentValues<3> position_values_;
+  TangentParentValues<2> normal_values_;
+  TangentParentValues<2> tex_coord_values_;
   std::vector<Sums> sums_;
 };
+
+// A vertex of more corners than this would let the sums overflow; no real
+// mesh comes near it.
+constexpr int32_t kTangentMaxCornersPerEntry = 1 << 20;
 
 template <class MeshDataT>
 void GeometricTangentPredictor<MeshDataT>::ComputeSums(
     const MeshDataT &mesh_data, GeometricTangentKind kind, int normal_bits) {
   kind_ = kind;
   normal_bits_ = normal_bits;
+  position_values_.Init(*positions_);
+  normal_values_.Init(*normals_);
+  tex_coord_values_.Init(*tex_coords_);
+  const Mesh &mesh = *mesh_data.mesh();
   const auto *const table = mesh_data.corner_table();
-  const auto &vertex_to_data = *mesh_data.vertex_to_data_map();
-  const int num_entries =
-      static_cast<int>(mesh_data.data_to_corner_map()->size());
+  const std::vector<int32_t> &vertex_to_data = *mesh_data.vertex_to_data_map();
+  const uint32_t num_vertices = static_cast<uint32_t>(vertex_to_data.size());
+  const uint32_t num_entries =
+      static_cast<uint32_t>(mesh_data.data_to_corner_map()->size());
   sums_.assign(num_entries, Sums());
-  // A vertex of more corners than this would let the sums overflow; no
-  // real mesh comes near it.
-  constexpr int32_t kMaxCornersPerEntry = 1 << 20;
   const int num_faces = table->num_faces();
+  // Entries can reach the limit only in meshes of that many corners; kFace
+  // needs the counts anyway.
+  const bool count = kind_ == GeometricTangentKind::kFace ||
+                     3 * int64_t{num_faces} >= kTangentMaxCornersPerEntry;
   Face face;
   for (int f = 0; f < num_faces; ++f) {
-    if (!ComputeFace(*mesh_data.mesh(), FaceIndex(f), &face)) {
+    if (!ComputeFace(mesh.face(FaceIndex(f)), &face)) {
       continue;
     }
+    int32_t entries[3];
     for (int k = 0; k < 3; ++k) {
-      const int vertex = table->Vertex(CornerIndex(3 * f + k)).value();
-      if (vertex < 0 || vertex >= static_cast<int>(vertex_to_data.size())) {
+      const uint32_t vertex = table->Vertex(CornerIndex(3 * f + k)).value();
+      entries[k] = vertex < num_vertices ? vertex_to_data[vertex] : -1;
+      if (static_cast<uint32_t>(entries[k]) >= num_entries) {
+        entries[k] = -1;
+      }
+    }
+    if (count) {
+      AddFace<true>(face, f, entries);
+    } else {
+      AddFace<false>(face, f, entries);
+    }
+  }
+}
+
+template <class MeshDataT>
+template <bool count>
+void GeometricTangentPredictor<MeshDataT>::AddFace(const Face &face, int f,
+                                                   const int32_t *entries) {
+  for (int k = 0; k < 3; ++k) {
+    if (entries[k] < 0) {
+      continue;
+    }
+    Sums &sums = sums_[entries[k]];
+    if (count) {
+      if (sums.num_faces >= kTangentMaxCornersPerEntry) {
         continue;
       }
-      const int entry = vertex_to_data[vertex];
-      if (entry < 0 || entry >= num_entries ||
-          sums_[entry].num_faces >= kMaxCornersPerEntry) {
-        continue;
-      }
-      Sums &sums = sums_[entry];
-      const int64_t weight = face.weight[k];
-      for (int i = 0; i < 3; ++i) {
-        sums.direction[i] += weight * face.direction[i];
-      }
-      if (kind_ == GeometricTangentKind::kFace) {
-        for (int i = 0; i < 3; ++i) {
-          sums.normal[i] += weight * face.normal[i];
-        }
-      }
-      sums.orientation += weight * face.orientation;
       ++sums.num_faces;
       sums.last_face = f;
     }
+    const int64_t weight = face.weight[k];
+    for (int i = 0; i < 3; ++i) {
+      sums.direction[i] += weight * face.direction[i];
+    }
+    if (kind_ == GeometricTangentKind::kFace) {
+      for (int i = 0; i < 3; ++i) {
+        sums.normal[i] += weight * face.normal[i];
+      }
+    }
+    sums.orientation += weight * face.orientation;
   }
 }
 
@@ -219,26 +283,26 @@ void GeometricTangentPredictor<MeshDataT>::ComputeSums(
 // orientation flag) and its corner angles (EvalTspace()); false for a
 // triangle without a UV gradient.
 template <class MeshDataT>
-bool GeometricTangentPredictor<MeshDataT>::ComputeFace(const Mesh &mesh,
-                                                       FaceIndex face,
-                                                       Face *result) const {
-  TangentVec3 p[3];
-  int64_t uv[3][2];
+bool GeometricTangentPredictor<MeshDataT>::ComputeFace(
+    const Mesh::Face &points, Face *result) const {
+  int32_t p[3][3];
+  int32_t uv[3][2];
   for (int k = 0; k < 3; ++k) {
-    const PointIndex point = mesh.face(face)[k];
-    const auto position = ValueAt<3>(*positions_, point);
-    p[k] = {position[0], position[1], position[2]};
-    const auto tex = ValueAt<2>(*tex_coords_, point);
-    uv[k][0] = tex[0];
-    uv[k][1] = tex[1];
+    position_values_.Get(points[k], p[k]);
+    tex_coord_values_.Get(points[k], uv[k]);
   }
-  TangentVec3 e1 = Subtract(p[1], p[0]);
-  TangentVec3 e2 = Subtract(p[2], p[0]);
+  TangentVec3 e1, e2;
+  for (int i = 0; i < 3; ++i) {
+    e1[i] = int64_t{p[1][i]} - p[0][i];
+    e2[i] = int64_t{p[2][i]} - p[0][i];
+  }
   const int edge_shift = ShiftBelow(MaxAbsBits(e1) | MaxAbsBits(e2), 30);
   e1 = ShiftRight(e1, edge_shift);
   e2 = ShiftRight(e2, edge_shift);
-  TangentVec3 d1 = {uv[1][0] - uv[0][0], uv[1][1] - uv[0][1], 0};
-  TangentVec3 d2 = {uv[2][0] - uv[0][0], uv[2][1] - uv[0][1], 0};
+  TangentVec3 d1 = {int64_t{uv[1][0]} - uv[0][0], int64_t{uv[1][1]} - uv[0][1],
+                    0};
+  TangentVec3 d2 = {int64_t{uv[2][0]} - uv[0][0], int64_t{uv[2][1]} - uv[0][1],
+                    0};
   const int uv_shift = ShiftBelow(MaxAbsBits(d1) | MaxAbsBits(d2), 30);
   d1 = ShiftRight(d1, uv_shift);
   d2 = ShiftRight(d2, uv_shift);
@@ -279,7 +343,9 @@ GeometricTangentPrediction GeometricTangentPredictor<MeshDataT>::Predict(
     const MeshDataT &mesh_data, int entry) const {
   GeometricTangentPrediction prediction;
   const Sums &sums = sums_[entry];
-  if (sums.num_faces == 0) {
+  // kMikkTSpace and kUniform count no corners: an entry without any has a
+  // zero sum, which projects to no prediction below.
+  if (kind_ == GeometricTangentKind::kFace && sums.num_faces == 0) {
     return prediction;
   }
   prediction.handedness = sums.orientation >= 0 ? 1 : -1;
@@ -294,11 +360,11 @@ GeometricTangentPrediction GeometricTangentPredictor<MeshDataT>::Predict(
     }
   } else {
     const PointIndex point = mesh_data.mesh()->CornerToPointId(
-        mesh_data.data_to_corner_map()->at(entry));
-    const auto octahedral = ValueAt<2>(*normals_, point);
+        (*mesh_data.data_to_corner_map())[entry]);
+    int32_t octahedral[2];
+    normal_values_.Get(point, octahedral);
     plane_normal =
-        OctahedralToVector(static_cast<int32_t>(octahedral[0]),
-                           static_cast<int32_t>(octahedral[1]), normal_bits_);
+        OctahedralToVector(octahedral[0], octahedral[1], normal_bits_);
     if (!NormalizeToUnit(ProjectOntoPlane(sums.direction, plane_normal),
                          &prediction.tangent)) {
       return prediction;
