@@ -125,7 +125,8 @@ inline int64_t DivideBySmallCount(int64_t x, int n) {
   }
 }
 
-// floor(sqrt(value)) for value < 2^62, exact on every platform: the double
+// floor(sqrt(value)) for value < 3 * 2^62 (roots below 2^31.8, so that
+// the corrections' squares fit), exact on every platform: the double
 // square root is only an estimate (within one of the truth for these
 // values), which integer comparisons then correct, so the result is the
 // mathematically defined integer whatever the floating point unit does.

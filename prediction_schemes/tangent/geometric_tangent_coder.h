@@ -181,19 +181,24 @@ class TangentComponentPredictor {
       std::swap(b1, b2);
     }
     axes_ = {b1, b2, b3};
+    // The grid coordinates of t / |t|: |t[i]| <= length, so |t[i]| *
+    // reciprocal <= scale * 2^26 <= 2^62.
+    const int64_t reciprocal =
+        (params_.grid.scale << kReciprocalBits) / prediction.length;
     for (int i = 0; i < 3; ++i) {
-      coordinate_[i] = params_.grid.Coordinate(i, t[i]);
+      coordinate_[i] = params_.grid.offset[i] +
+                       RoundedShift(t[i] * reciprocal, kReciprocalBits);
     }
-    // B[b2] / B[b1] in units of 2^-16, within [-1, 1] by the choice of b1;
-    // 0 where B[b1] is too small (about 16 times smaller than the largest
-    // component) to say how b1 turned.
-    const TangentVec3 bitangent =
-        ShiftRight(b, ShiftBelow(MaxAbsBits(b), 30));
-    const uint64_t along = AbsAsUnsigned(bitangent[b1]);
-    ratio_ = along == 0 || along * 16 < MaxAbsBits(bitangent)
+    // B[b2] / B[b1] in units of 2^-16 (B below 2^44), within [-1, 1] by the
+    // choice of b1; 0 where B[b1] is too small (about 16 times smaller than
+    // the largest component) to say how b1 turned.
+    const uint64_t along = AbsAsUnsigned(b[b1]);
+    ratio_ = along == 0 || along * 16 < MaxAbsBits(b)
                  ? 0
-                 : (bitangent[b2] * 65536) / bitangent[b1];
+                 : (b[b2] * 65536) / b[b1];
   }
+  // The grid coordinate of the predicted tangent on axis |axis|.
+  int64_t Coordinate(int axis) const { return coordinate_[axis]; }
   int Axis(int step) const { return axes_[step]; }
 
   // The predicted value of component Axis(step) given |values| (indexed by
@@ -223,6 +228,8 @@ class TangentComponentPredictor {
   }
 
  private:
+  static constexpr int kReciprocalBits = 26;
+
   // Eq. (1): b2 + gain * (v1 - c1) * B[b2] / B[b1], where v1 - c1 is how
   // far the coded b1 lies from the predicted coordinate.
   int64_t SecondCoordinate(const int32_t *values) const {

@@ -44,12 +44,18 @@ namespace draco {
 // int32 in the decoder, uint32 in the encoder, the same bits), else from a
 // copy converted once; either way a value costs one address computation
 // instead of PointAttribute::ConvertValue()'s type dispatch.
+// FitBelow() makes Get<true>() return every component minus the smallest,
+// shifted right so that all of them stay below a bound: the face
+// arithmetic then needs no shift per triangle (Get<false>() returns the
+// values as they are, for attributes that already fit).
 template <int N>
 class TangentParentValues {
  public:
   void Init(const PointAttribute &att) {
     att_ = &att;
     copy_.clear();
+    shift_ = 0;
+    min_ = 0;
     if ((att.data_type() == DT_INT32 || att.data_type() == DT_UINT32) &&
         att.byte_stride() >= static_cast<int64_t>(sizeof(int32_t) * N) &&
         att.size() > 0) {
@@ -69,16 +75,60 @@ class TangentParentValues {
     base_ = reinterpret_cast<const uint8_t *>(copy_.data());
     stride_ = sizeof(int32_t) * N;
   }
+
+  // Chooses the shift of Get<true>() that keeps the components below
+  // 2^|bits|; false where none is needed (all of them in [0, 2^bits)).
+  bool FitBelow(int bits) {
+    const size_t size = att_->size();
+    uint32_t any = 0;
+    for (size_t i = 0; i < size; ++i) {
+      for (int c = 0; c < N; ++c) {
+        any |= static_cast<uint32_t>(Component(i, c));
+      }
+    }
+    if (any < (uint32_t{1} << bits)) {
+      shift_ = 0;
+      min_ = 0;
+      return false;
+    }
+    int64_t min = INT32_MAX, max = INT32_MIN;
+    for (size_t i = 0; i < size; ++i) {
+      for (int c = 0; c < N; ++c) {
+        min = std::min<int64_t>(min, Component(i, c));
+        max = std::max<int64_t>(max, Component(i, c));
+      }
+    }
+    min_ = min;
+    shift_ = std::max(0, BitLength(static_cast<uint64_t>(max - min)) - bits);
+    return true;
+  }
+
+  template <bool shifted>
   void Get(PointIndex point, int32_t *value) const {
     std::memcpy(value, base_ + stride_ * att_->mapped_index(point).value(),
                 sizeof(int32_t) * N);
+    if (shifted) {
+      for (int c = 0; c < N; ++c) {
+        value[c] = static_cast<int32_t>(static_cast<uint64_t>(value[c] - min_) >>
+                                        shift_);
+      }
+    }
   }
 
  private:
+  int32_t Component(size_t i, int c) const {
+    int32_t value;
+    std::memcpy(&value, base_ + stride_ * i + sizeof(int32_t) * c,
+                sizeof(value));
+    return value;
+  }
+
   const PointAttribute *att_ = nullptr;
   const uint8_t *base_ = nullptr;
   int64_t stride_ = 0;
   std::vector<int32_t> copy_;
+  int shift_ = 0;
+  int64_t min_ = 0;
 };
 
 // What the predictor says about one tangent.
@@ -86,8 +136,11 @@ struct GeometricTangentPrediction {
   // False when no triangle around the vertex has a UV gradient (all of them
   // degenerate in 3D or in UV); the other members are then meaningless.
   bool valid = false;
-  TangentVec3 tangent = {0, 0, 0};    // Unit (kTangentUnit).
-  // plane normal x tangent, in any length up to 2^50: only its direction
+  // The predicted direction, components below 2^31, and its length
+  // (rounded down, at least 1).
+  TangentVec3 tangent = {0, 0, 0};
+  int64_t length = 1;
+  // plane normal x tangent, components below 2^44: only its direction
   // serves.
   TangentVec3 bitangent = {0, 0, 0};
   // +1 where the vertex's UV triangles are counter-clockwise (by weight),
@@ -117,6 +170,11 @@ struct GeometricTangentPrediction {
 // kUniform project it onto the plane of the vertex normal, kFace keeps it
 // and takes the plane of the mean triangle normal instead; the handedness
 // is the orientation with the larger weight.
+//
+// Positions are taken below 2^15 and texture coordinates below 2^14
+// (shifted there once per mesh where they are not, as with more than 15
+// and 14 quantisation bits), so that a triangle's products fit 64 bits
+// without a shift of its own.
 //
 // Weak where the writer grouped corners differently from the tangent's
 // Draco value (a tangent value shared across a UV seam sums two groups,
@@ -162,22 +220,27 @@ class GeometricTangentPredictor {
                                      int entry) const;
 
  private:
-  struct Face {
-    TangentVec3 direction;  // Unit dP/du.
-    TangentVec3 normal;     // Unit triangle normal (kFace only).
-    std::array<int32_t, 3> weight;
-    int orientation;        // +1, -1; 0: no gradient.
-  };
+  // Positions and texture coordinates are brought below these (see above).
+  static constexpr int kPositionBits = 15;
+  static constexpr int kTexCoordBits = 14;
+  // Plane normals are shifted below 2^kPlaneNormalBits.
+  static constexpr int kPlaneNormalBits = 12;
+
   struct Sums {
     TangentVec3 direction = {0, 0, 0};
-    TangentVec3 normal = {0, 0, 0};  // kFace only.
     int64_t orientation = 0;  // Sum of weight * orientation.
-    // Corners summed and the last one's face: counted for kFace, and for
-    // the others only in meshes where an entry could reach
-    // kTangentMaxCornersPerEntry.
+  };
+  // kFace's sums besides: the unit normals, the corners and the last one's
+  // face. The counts also guard the others' sums in meshes where an entry
+  // could reach kMaxCornersPerEntry.
+  struct FaceSums {
+    TangentVec3 normal = {0, 0, 0};
     int32_t num_faces = 0;
     int32_t last_face = -1;
   };
+  // A vertex of more corners than this would let the sums overflow; no real
+  // mesh comes near it.
+  static constexpr int32_t kMaxCornersPerEntry = 1 << 20;
 
   static bool Take(const PointAttribute *att, int num_components,
                    const PointAttribute **slot) {
@@ -187,12 +250,19 @@ class GeometricTangentPredictor {
     *slot = att;
     return true;
   }
-  bool ComputeFace(const Mesh::Face &points, Face *result) const;
-  // Adds |face| (of index |f|) to the |entries| of its corners (-1: none);
-  // with |count|, only to entries of fewer than kTangentMaxCornersPerEntry
-  // corners, and counting them.
-  template <bool count>
-  void AddFace(const Face &face, int f, const int32_t *entries);
+  template <GeometricTangentKind kind, bool shifted>
+  void SumFaces(const MeshDataT &mesh_data);
+  template <GeometricTangentKind kind>
+  void SumFaces(const MeshDataT &mesh_data, bool shifted) {
+    if (shifted) {
+      SumFaces<kind, true>(mesh_data);
+    } else {
+      SumFaces<kind, false>(mesh_data);
+    }
+  }
+  // The plane normal of |entry| for kMikkTSpace and kUniform, below
+  // 2^kPlaneNormalBits.
+  TangentVec3 VertexNormal(const MeshDataT &mesh_data, int entry) const;
 
   const PointAttribute *positions_ = nullptr;
   const PointAttribute *normals_ = nullptr;
@@ -203,11 +273,8 @@ class GeometricTangentPredictor {
   TangentParentValues<2> normal_values_;
   TangentParentValues<2> tex_coord_values_;
   std::vector<Sums> sums_;
+  std::vector<FaceSums> face_sums_;
 };
-
-// A vertex of more corners than this would let the sums overflow; no real
-// mesh comes near it.
-constexpr int32_t kTangentMaxCornersPerEntry = 1 << 20;
 
 template <class MeshDataT>
 void GeometricTangentPredictor<MeshDataT>::ComputeSums(
@@ -217,161 +284,157 @@ void GeometricTangentPredictor<MeshDataT>::ComputeSums(
   position_values_.Init(*positions_);
   normal_values_.Init(*normals_);
   tex_coord_values_.Init(*tex_coords_);
+  // Both, as one template argument: each is rare.
+  const bool shifted = position_values_.FitBelow(kPositionBits) |
+                       tex_coord_values_.FitBelow(kTexCoordBits);
+  const size_t num_entries = mesh_data.data_to_corner_map()->size();
+  sums_.assign(num_entries, Sums());
+  const bool count = kind_ == GeometricTangentKind::kFace ||
+                     3 * int64_t{mesh_data.corner_table()->num_faces()} >=
+                         kMaxCornersPerEntry;
+  face_sums_.assign(count ? num_entries : 0, FaceSums());
+  switch (kind_) {
+    case GeometricTangentKind::kMikkTSpace:
+      SumFaces<GeometricTangentKind::kMikkTSpace>(mesh_data, shifted);
+      break;
+    case GeometricTangentKind::kUniform:
+      SumFaces<GeometricTangentKind::kUniform>(mesh_data, shifted);
+      break;
+    case GeometricTangentKind::kFace:
+      SumFaces<GeometricTangentKind::kFace>(mesh_data, shifted);
+      break;
+  }
+}
+
+// Per triangle: MikkTSpace's tangent (InitTriInfo(): vOs with the sign of
+// the UV orientation), normalised, and its corner angles (EvalTspace()),
+// added to the entries of its corners. Positions below 2^15 and texture
+// coordinates below 2^14 bound the gradient below 2^30 and the normal
+// below 2^31.
+template <class MeshDataT>
+template <GeometricTangentKind kind, bool shifted>
+void GeometricTangentPredictor<MeshDataT>::SumFaces(
+    const MeshDataT &mesh_data) {
   const Mesh &mesh = *mesh_data.mesh();
-  const auto *const table = mesh_data.corner_table();
+  const auto &table = *mesh_data.corner_table();
   const std::vector<int32_t> &vertex_to_data = *mesh_data.vertex_to_data_map();
   const uint32_t num_vertices = static_cast<uint32_t>(vertex_to_data.size());
-  const uint32_t num_entries =
-      static_cast<uint32_t>(mesh_data.data_to_corner_map()->size());
-  sums_.assign(num_entries, Sums());
-  const int num_faces = table->num_faces();
-  // Entries can reach the limit only in meshes of that many corners; kFace
-  // needs the counts anyway.
-  const bool count = kind_ == GeometricTangentKind::kFace ||
-                     3 * int64_t{num_faces} >= kTangentMaxCornersPerEntry;
-  Face face;
+  const uint32_t num_entries = static_cast<uint32_t>(sums_.size());
+  const bool count = !face_sums_.empty();
+  const int num_faces = table.num_faces();
   for (int f = 0; f < num_faces; ++f) {
-    if (!ComputeFace(mesh.face(FaceIndex(f)), &face)) {
-      continue;
-    }
-    int32_t entries[3];
+    const Mesh::Face &points = mesh.face(FaceIndex(f));
+    int32_t p[3][3], uv[3][2];
     for (int k = 0; k < 3; ++k) {
-      const uint32_t vertex = table->Vertex(CornerIndex(3 * f + k)).value();
-      entries[k] = vertex < num_vertices ? vertex_to_data[vertex] : -1;
-      if (static_cast<uint32_t>(entries[k]) >= num_entries) {
-        entries[k] = -1;
-      }
+      position_values_.template Get<shifted>(points[k], p[k]);
+      tex_coord_values_.template Get<shifted>(points[k], uv[k]);
     }
-    if (count) {
-      AddFace<true>(face, f, entries);
-    } else {
-      AddFace<false>(face, f, entries);
-    }
-  }
-}
-
-template <class MeshDataT>
-template <bool count>
-void GeometricTangentPredictor<MeshDataT>::AddFace(const Face &face, int f,
-                                                   const int32_t *entries) {
-  for (int k = 0; k < 3; ++k) {
-    if (entries[k] < 0) {
+    const int64_t du1 = int64_t{uv[1][0]} - uv[0][0];
+    const int64_t dv1 = int64_t{uv[1][1]} - uv[0][1];
+    const int64_t du2 = int64_t{uv[2][0]} - uv[0][0];
+    const int64_t dv2 = int64_t{uv[2][1]} - uv[0][1];
+    const int64_t twice_uv_area = du1 * dv2 - du2 * dv1;
+    if (twice_uv_area == 0) {
       continue;
     }
-    Sums &sums = sums_[entries[k]];
-    if (count) {
-      if (sums.num_faces >= kTangentMaxCornersPerEntry) {
+    const int orientation = twice_uv_area > 0 ? 1 : -1;
+    TangentVec3 e1, e2, gradient;
+    for (int i = 0; i < 3; ++i) {
+      e1[i] = int64_t{p[1][i]} - p[0][i];
+      e2[i] = int64_t{p[2][i]} - p[0][i];
+      gradient[i] = orientation * (dv2 * e1[i] - dv1 * e2[i]);
+    }
+    const TangentVec3 normal = Cross(e1, e2);
+    const uint64_t gradient_squared = SquaredLength(gradient);
+    const uint64_t normal_squared = SquaredLength(normal);
+    if (gradient_squared == 0 || normal_squared == 0) {
+      continue;
+    }
+    const TangentVec3 direction = ToUnitLength(gradient, gradient_squared);
+    const std::array<int32_t, 3> weight =
+        kind == GeometricTangentKind::kMikkTSpace
+            ? CornerAngles(e1, e2, IntSqrtFloor(normal_squared))
+            : std::array<int32_t, 3>{1, 1, 1};
+    TangentVec3 unit_normal;
+    if (kind == GeometricTangentKind::kFace) {
+      unit_normal = ToUnitLength(normal, normal_squared);
+    }
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t vertex = table.Vertex(CornerIndex(3 * f + k)).value();
+      if (vertex >= num_vertices) {
         continue;
       }
-      ++sums.num_faces;
-      sums.last_face = f;
-    }
-    const int64_t weight = face.weight[k];
-    for (int i = 0; i < 3; ++i) {
-      sums.direction[i] += weight * face.direction[i];
-    }
-    if (kind_ == GeometricTangentKind::kFace) {
-      for (int i = 0; i < 3; ++i) {
-        sums.normal[i] += weight * face.normal[i];
+      const uint32_t entry = vertex_to_data[vertex];
+      if (entry >= num_entries) {
+        continue;
       }
+      if (count) {
+        FaceSums &face_sums = face_sums_[entry];
+        if (face_sums.num_faces >= kMaxCornersPerEntry) {
+          continue;
+        }
+        ++face_sums.num_faces;
+        face_sums.last_face = f;
+        if (kind == GeometricTangentKind::kFace) {
+          for (int i = 0; i < 3; ++i) {
+            face_sums.normal[i] += unit_normal[i];
+          }
+        }
+      }
+      Sums &sums = sums_[entry];
+      const int64_t w = weight[k];
+      for (int i = 0; i < 3; ++i) {
+        sums.direction[i] += w * direction[i];
+      }
+      sums.orientation += w * orientation;
     }
-    sums.orientation += weight * face.orientation;
   }
 }
 
-// MikkTSpace's per-triangle tangent (InitTriInfo(): vOs and the UV
-// orientation flag) and its corner angles (EvalTspace()); false for a
-// triangle without a UV gradient.
 template <class MeshDataT>
-bool GeometricTangentPredictor<MeshDataT>::ComputeFace(
-    const Mesh::Face &points, Face *result) const {
-  int32_t p[3][3];
-  int32_t uv[3][2];
-  for (int k = 0; k < 3; ++k) {
-    position_values_.Get(points[k], p[k]);
-    tex_coord_values_.Get(points[k], uv[k]);
-  }
-  TangentVec3 e1, e2;
-  for (int i = 0; i < 3; ++i) {
-    e1[i] = int64_t{p[1][i]} - p[0][i];
-    e2[i] = int64_t{p[2][i]} - p[0][i];
-  }
-  const int edge_shift = ShiftBelow(MaxAbsBits(e1) | MaxAbsBits(e2), 30);
-  e1 = ShiftRight(e1, edge_shift);
-  e2 = ShiftRight(e2, edge_shift);
-  TangentVec3 d1 = {int64_t{uv[1][0]} - uv[0][0], int64_t{uv[1][1]} - uv[0][1],
-                    0};
-  TangentVec3 d2 = {int64_t{uv[2][0]} - uv[0][0], int64_t{uv[2][1]} - uv[0][1],
-                    0};
-  const int uv_shift = ShiftBelow(MaxAbsBits(d1) | MaxAbsBits(d2), 30);
-  d1 = ShiftRight(d1, uv_shift);
-  d2 = ShiftRight(d2, uv_shift);
-  const int64_t twice_uv_area = d1[0] * d2[1] - d2[0] * d1[1];
-  if (twice_uv_area == 0) {
-    return false;
-  }
-  TangentVec3 gradient;
-  for (int i = 0; i < 3; ++i) {
-    gradient[i] = d2[1] * e1[i] - d1[1] * e2[i];
-  }
-  const TangentVec3 normal = Cross(e1, e2);
-  if (normal == TangentVec3{0, 0, 0} ||
-      !NormalizeToUnit(gradient, &result->direction)) {
-    return false;
-  }
-  result->orientation = twice_uv_area > 0 ? 1 : -1;
-  if (twice_uv_area < 0) {
-    for (int64_t &c : result->direction) {
-      c = -c;
-    }
-  }
-  if (kind_ == GeometricTangentKind::kMikkTSpace) {
-    result->weight = CornerAngles(e1, e2, normal);
-  } else {
-    result->weight = {1, 1, 1};
-  }
-  if (kind_ == GeometricTangentKind::kFace) {
-    NormalizeToUnit(normal, &result->normal);
-  }
-  return true;
+TangentVec3 GeometricTangentPredictor<MeshDataT>::VertexNormal(
+    const MeshDataT &mesh_data, int entry) const {
+  const PointIndex point = mesh_data.mesh()->CornerToPointId(
+      (*mesh_data.data_to_corner_map())[entry]);
+  int32_t octahedral[2];
+  normal_values_.template Get<false>(point, octahedral);
+  const TangentVec3 normal =
+      OctahedralToVector(octahedral[0], octahedral[1], normal_bits_);
+  return normal_bits_ <= kPlaneNormalBits
+             ? normal
+             : ShiftRight(normal, normal_bits_ - kPlaneNormalBits);
 }
 
 // MikkTSpace's EvalTspace(): the weighted sum of the triangles' gradients
-// around the vertex, projected onto the normal plane and normalised.
+// around the vertex, projected onto the normal plane.
 template <class MeshDataT>
 GeometricTangentPrediction GeometricTangentPredictor<MeshDataT>::Predict(
     const MeshDataT &mesh_data, int entry) const {
   GeometricTangentPrediction prediction;
   const Sums &sums = sums_[entry];
-  // kMikkTSpace and kUniform count no corners: an entry without any has a
-  // zero sum, which projects to no prediction below.
-  if (kind_ == GeometricTangentKind::kFace && sums.num_faces == 0) {
-    return prediction;
-  }
   prediction.handedness = sums.orientation >= 0 ? 1 : -1;
+  // 30 bits: the projection's products fit, and its rounding (a 2^-8 of
+  // the normal) stays far below the grid's steps.
+  const TangentVec3 direction = ScaleToBits(sums.direction, 30);
   TangentVec3 plane_normal;
   if (kind_ == GeometricTangentKind::kFace) {
-    if (!NormalizeToUnit(sums.direction, &prediction.tangent) ||
-        !NormalizeToUnit(sums.normal, &plane_normal)) {
-      return prediction;
+    const FaceSums &face_sums = face_sums_[entry];
+    if (face_sums.num_faces == 1) {
+      prediction.single_face = face_sums.last_face;
     }
-    if (sums.num_faces == 1) {
-      prediction.single_face = sums.last_face;
-    }
+    prediction.tangent = direction;
+    plane_normal = ShiftRight(
+        face_sums.normal,
+        ShiftBelow(MaxAbsBits(face_sums.normal), kPlaneNormalBits));
   } else {
-    const PointIndex point = mesh_data.mesh()->CornerToPointId(
-        (*mesh_data.data_to_corner_map())[entry]);
-    int32_t octahedral[2];
-    normal_values_.Get(point, octahedral);
-    plane_normal =
-        OctahedralToVector(octahedral[0], octahedral[1], normal_bits_);
-    if (!NormalizeToUnit(ProjectOntoPlane(sums.direction, plane_normal),
-                         &prediction.tangent)) {
-      return prediction;
-    }
-    plane_normal = ShiftRight(plane_normal,
-                              ShiftBelow(MaxAbsBits(plane_normal), 24));
+    plane_normal = VertexNormal(mesh_data, entry);
+    prediction.tangent = ProjectOntoPlane(direction, plane_normal);
   }
+  const uint64_t squared = SquaredLength(prediction.tangent);
+  if (squared == 0) {
+    return prediction;
+  }
+  prediction.length = static_cast<int64_t>(IntSqrtFloor(squared));
   // The bitangent only serves its direction (the axis order and a ratio).
   prediction.bitangent = Cross(plane_normal, prediction.tangent);
   prediction.valid = true;

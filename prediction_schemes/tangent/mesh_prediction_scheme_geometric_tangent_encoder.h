@@ -209,7 +209,7 @@ MeshPredictionSchemeGeometricTangentEncoder<DataTypeT, TransformT, MeshDataT>::
     // In units of 2^-8 of a step, capped at 256 steps.
     const int64_t moved = std::clamp<int64_t>(
         RoundedShift((int64_t{v[b1]} << TangentGrid::kFractionBits) -
-                         params.grid.Coordinate(b1, prediction.tangent[b1]),
+                         components.Coordinate(b1),
                      8),
         -(1 << 16), 1 << 16);
     sum_squares += static_cast<uint64_t>(moved * moved);
