@@ -69,6 +69,8 @@ class MeshPredictionSchemeGeometricTangentDecoder
   PredictionSchemeMethod GetPredictionMethod() const override {
     return MESH_PREDICTION_GEOMETRIC_TANGENT;
   }
+  // Draco's corrections are all zero (see the encoder): no sign to undo.
+  bool AreCorrectionsPositive() override { return true; }
   bool IsInitialized() const override {
     return predictor_.IsInitialized() && this->mesh_data().IsInitialized();
   }
@@ -127,9 +129,16 @@ bool MeshPredictionSchemeGeometricTangentDecoder<DataTypeT, TransformT,
                           int size, int num_components,
                           const PointIndex * /* entry_to_point_id_map */) {
   if (num_components != kTangentNumComponents ||
-      size != NumEntries() * kTangentNumComponents ||
-      std::any_of(in_corr, in_corr + size,
-                  [](CorrType c) { return c != CorrType(0); })) {
+      size != NumEntries() * kTangentNumComponents) {
+    return false;
+  }
+  // Every correction must be zero: OR them all (a loop compilers
+  // vectorise, unlike a search that stops early).
+  CorrType any = 0;
+  for (int i = 0; i < size; ++i) {
+    any |= in_corr[i];
+  }
+  if (any != 0) {
     return false;
   }
   predictor_.ComputeSums(this->mesh_data(), config_.kind,

@@ -87,6 +87,9 @@ class MeshPredictionSchemeGeometricTangentEncoder
   PredictionSchemeMethod GetPredictionMethod() const override {
     return MESH_PREDICTION_GEOMETRIC_TANGENT;
   }
+  // The corrections are all zero: Draco need not zig-zag them (nor the
+  // decoder undo it).
+  bool AreCorrectionsPositive() override { return true; }
   bool IsInitialized() const override {
     return predictor_.IsInitialized() && this->mesh_data().IsInitialized();
   }
