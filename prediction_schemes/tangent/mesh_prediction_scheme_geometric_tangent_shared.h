@@ -105,29 +105,52 @@ bool CodeGeometricTangents(const MeshDataT &mesh_data,
                            const TangentCodingParameters &params,
                            PredictFn predict, CoderT *coder, int32_t *values,
                            std::vector<int8_t> *neighbour_sums = nullptr) {
-  const auto *const table = mesh_data.corner_table();
-  const auto &vertex_to_data = *mesh_data.vertex_to_data_map();
+  const auto &table = *mesh_data.corner_table();
+  const int32_t *const vertex_to_data = mesh_data.vertex_to_data_map()->data();
+  const uint32_t num_vertices =
+      static_cast<uint32_t>(mesh_data.vertex_to_data_map()->size());
+  const CornerIndex *const data_to_corner =
+      mesh_data.data_to_corner_map()->data();
   const int num_entries =
       static_cast<int>(mesh_data.data_to_corner_map()->size());
-  std::vector<int8_t> first_bits(num_entries, -1);
-  std::vector<int32_t> single_face(num_entries, -1);
+  // Per coded entry: its first residual's bit length and its single
+  // triangle. int32_t: stores of a char type would make the compiler reload
+  // everything else.
+  std::vector<int32_t> first_bits(num_entries);
+  std::vector<int32_t> single_face(num_entries);
   // The entry at the vertex of |corner| if it is coded before |entry|.
   const auto coded_neighbour = [&](CornerIndex corner, int entry) {
     if (corner == kInvalidCornerIndex) {
       return -1;
     }
-    const int vertex = table->Vertex(corner).value();
-    const int data = vertex >= 0 && vertex < static_cast<int>(vertex_to_data.size())
-                         ? vertex_to_data[vertex]
-                         : -1;
-    return data >= 0 && data < entry ? data : -1;
+    const uint32_t vertex = table.Vertex(corner).value();
+    const int data = vertex < num_vertices ? vertex_to_data[vertex] : -1;
+    return static_cast<uint32_t>(data) < static_cast<uint32_t>(entry) ? data
+                                                                      : -1;
   };
+  // The neighbour classes of every pair of neighbours' first_bits (+1, 0:
+  // no neighbour), and what the encoder's first pass records.
+  constexpr int kBits = 9;
+  std::array<int8_t, kBits * kBits> class_of, sum_of;
+  for (int left = 0; left < kBits; ++left) {
+    for (int right = 0; right < kBits; ++right) {
+      const int sum = TangentNeighbourSum(left - 1, right - 1);
+      sum_of[kBits * left + right] = static_cast<int8_t>(sum);
+      class_of[kBits * left + right] =
+          static_cast<int8_t>(TangentNeighbourClass(sum, params));
+    }
+  }
+  std::array<int32_t, kTangentNumComponents> fallback;
+  for (int c = 0; c < kTangentNumComponents; ++c) {
+    fallback[c] = params.grid.Round(
+        params.grid.Coordinate(c, c == 3 ? kTangentUnit : 0));
+  }
   TangentComponentPredictor components(params);
   for (int entry = 0; entry < num_entries; ++entry) {
     int32_t *const v = values + kTangentNumComponents * entry;
-    const CornerIndex corner(mesh_data.data_to_corner_map()->at(entry));
-    const int left = coded_neighbour(table->Next(corner), entry);
-    const int right = coded_neighbour(table->Previous(corner), entry);
+    const CornerIndex corner = data_to_corner[entry];
+    const int left = coded_neighbour(table.Next(corner), entry);
+    const int right = coded_neighbour(table.Previous(corner), entry);
     const GeometricTangentPrediction prediction = predict(entry);
     single_face[entry] = prediction.single_face;
     int source = -1;
@@ -147,41 +170,41 @@ bool CodeGeometricTangents(const MeshDataT &mesh_data,
       for (int c = 0; c < kTangentNumComponents; ++c) {
         const int32_t predicted =
             source >= 0 ? values[kTangentNumComponents * source + c]
-                        : params.grid.Round(params.grid.Coordinate(
-                              c, c == 3 ? kTangentUnit : 0));
+                        : fallback[c];
         if (!coder->Value(context, predicted, 1, &v[c])) {
           return false;
         }
       }
-      first_bits[entry] = 0;
+      first_bits[entry] = 1;
       continue;
     }
-    const int neighbour_sum =
-        TangentNeighbourSum(left >= 0 ? first_bits[left] : -1,
-                            right >= 0 ? first_bits[right] : -1);
+    const int pair = kBits * (left >= 0 ? first_bits[left] : 0) +
+                     (right >= 0 ? first_bits[right] : 0);
     if (neighbour_sums != nullptr) {
-      (*neighbour_sums)[entry] = static_cast<int8_t>(neighbour_sum);
+      (*neighbour_sums)[entry] = sum_of[pair];
     }
-    const int neighbour_class = TangentNeighbourClass(neighbour_sum, params);
+    const int neighbour_class = class_of[pair];
     components.Begin(prediction);
-    for (int step = 0; step < 3; ++step) {
-      const int axis = components.Axis(step);
-      const TangentPredictedValue predicted = components.Predict(step, v);
-      const int context =
-          step == 0 ? kTangentFirstContext + 2 * neighbour_class +
-                          predicted.fraction_class
-          : step == 1 ? kTangentSecondContext + 2 * (neighbour_class > 0) +
-                            predicted.fraction_class
-                      : kTangentThirdContext + predicted.fraction_class;
-      if (!coder->Value(context, predicted.value, predicted.sign, &v[axis])) {
-        return false;
-      }
-      if (step == 0) {
-        first_bits[entry] = static_cast<int8_t>(std::min(
-            7, BitLength(AbsAsUnsigned(int64_t{v[axis]} - predicted.value))));
-      }
+    const int b1 = components.Axis(0), b2 = components.Axis(1),
+              b3 = components.Axis(2);
+    const TangentPredictedValue first = components.First();
+    if (!coder->Value(kTangentFirstContext + 2 * neighbour_class +
+                          first.fraction_class,
+                      first.value, first.sign, &v[b1])) {
+      return false;
     }
-    if (!coder->Handedness(kTangentHandednessContext,
+    first_bits[entry] =
+        1 + std::min(7, BitLength(AbsAsUnsigned(int64_t{v[b1]} - first.value)));
+    const TangentPredictedValue second = components.Second(v[b1]);
+    if (!coder->Value(kTangentSecondContext + 2 * (neighbour_class > 0) +
+                          second.fraction_class,
+                      second.value, second.sign, &v[b2])) {
+      return false;
+    }
+    const TangentPredictedValue third = components.Third(v[b1], v[b2]);
+    if (!coder->Value(kTangentThirdContext + third.fraction_class,
+                      third.value, third.sign, &v[b3]) ||
+        !coder->Handedness(kTangentHandednessContext,
                            components.PredictHandedness(), &v[3])) {
       return false;
     }
