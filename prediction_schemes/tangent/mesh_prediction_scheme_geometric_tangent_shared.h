@@ -22,6 +22,10 @@
 #include <vector>
 
 #include "draco/attributes/geometry_attribute.h"
+#include "draco/core/decoder_buffer.h"
+#include "draco/core/encoder_buffer.h"
+#include "draco/core/varint_decoding.h"
+#include "draco/core/varint_encoding.h"
 #include "prediction_schemes/tangent/geometric_tangent_coder.h"
 #include "prediction_schemes/tangent/geometric_tangent_predictor.h"
 #include "prediction_schemes/tangent/geometric_tangent_settings.h"
@@ -52,10 +56,15 @@ struct GeometricTangentConfig {
   int tex_coord_index = 0;
   // Octahedral bits of the normals (Draco's normal quantisation).
   int normal_bits = 0;
+  // Whether the handedness, and the copies of kTangentCopyContext, are
+  // coded as TangentExceptions instead of per-entry tokens.
+  bool handedness_exceptions = false;
+  bool copy_exceptions = false;
 
   void Encode(EncoderBuffer *buffer) const {
     buffer->Encode(static_cast<uint8_t>(
-        static_cast<uint8_t>(kind) | (coding.flip_handedness ? 4 : 0)));
+        static_cast<uint8_t>(kind) | (coding.flip_handedness ? 4 : 0) |
+        (handedness_exceptions ? 8 : 0) | (copy_exceptions ? 16 : 0)));
     EncodeVarint<uint32_t>(static_cast<uint32_t>(tex_coord_index), buffer);
     buffer->Encode(static_cast<uint8_t>(normal_bits));
     buffer->Encode(static_cast<uint16_t>(coding.shift_gain));
@@ -69,7 +78,7 @@ struct GeometricTangentConfig {
     uint32_t index;
     uint16_t gain;
     if (!buffer->Decode(&byte) || (byte & 3) >= kNumGeometricTangentKinds ||
-        byte > 7 || !DecodeVarint(&index, buffer) || index != 0 ||
+        byte > 31 || !DecodeVarint(&index, buffer) || index != 0 ||
         !buffer->Decode(&bits) || bits < 2 || bits > 30 ||
         !buffer->Decode(&gain) || gain > 256 ||
         !buffer->Decode(&coding.neighbour_thresholds[0]) ||
@@ -80,6 +89,8 @@ struct GeometricTangentConfig {
     }
     kind = static_cast<GeometricTangentKind>(byte & 3);
     coding.flip_handedness = (byte & 4) != 0;
+    handedness_exceptions = (byte & 8) != 0;
+    copy_exceptions = (byte & 16) != 0;
     tex_coord_index = 0;
     normal_bits = bits;
     coding.shift_gain = gain;
@@ -87,19 +98,97 @@ struct GeometricTangentConfig {
   }
 };
 
+// The entries that GeometricTangentConfig's exception flags take out of the
+// token streams, in entry order: entries whose handedness is not the
+// predicted one, with their HandednessSymbol(), or whose copy is not exact.
+// Most meshes have none or a few, where a token per entry costs its
+// decoding however well it compresses. Stream: a varint count, then per
+// entry a varint of its gap to the previous one and, for the handedness,
+// one of its symbol minus 1.
+class TangentExceptions {
+ public:
+  void Clear() {
+    entries_.clear();
+    symbols_.clear();
+    next_ = 0;
+  }
+  void Add(int entry, int32_t symbol) {
+    entries_.push_back(entry);
+    symbols_.push_back(symbol);
+  }
+  void Encode(bool with_symbols, EncoderBuffer *buffer) const {
+    EncodeVarint<uint32_t>(static_cast<uint32_t>(entries_.size()), buffer);
+    int previous = -1;
+    for (size_t i = 0; i < entries_.size(); ++i) {
+      EncodeVarint<uint32_t>(static_cast<uint32_t>(entries_[i] - previous - 1),
+                             buffer);
+      previous = entries_[i];
+      if (with_symbols) {
+        EncodeVarint<uint32_t>(static_cast<uint32_t>(symbols_[i] - 1), buffer);
+      }
+    }
+  }
+  // False for entries beyond |num_entries| or symbols no w has.
+  bool Decode(bool with_symbols, int num_entries, DecoderBuffer *buffer) {
+    Clear();
+    uint32_t count;
+    if (!DecodeVarint(&count, buffer) ||
+        count > static_cast<uint32_t>(num_entries)) {
+      return false;
+    }
+    entries_.resize(count);
+    symbols_.assign(count, 1);
+    int64_t entry = -1;
+    for (uint32_t i = 0; i < count; ++i) {
+      uint32_t gap, symbol = 0;
+      if (!DecodeVarint(&gap, buffer) ||
+          (with_symbols &&
+           (!DecodeVarint(&symbol, buffer) || symbol >= (1u << 30)))) {
+        return false;
+      }
+      entry += int64_t{gap} + 1;
+      if (entry >= num_entries) {
+        return false;
+      }
+      entries_[i] = static_cast<int32_t>(entry);
+      symbols_[i] = static_cast<int32_t>(symbol) + 1;
+    }
+    return true;
+  }
+  // While decoding, in entry order: whether |entry| is the next exception,
+  // and its symbol.
+  bool Take(int entry, int32_t *symbol) {
+    if (next_ >= entries_.size() || entries_[next_] != entry) {
+      return false;
+    }
+    *symbol = symbols_[next_++];
+    return true;
+  }
+  size_t size() const { return entries_.size(); }
+
+ private:
+  std::vector<int32_t> entries_;
+  std::vector<int32_t> symbols_;
+  size_t next_ = 0;
+};
+
 // Codes (encodes or decodes, by CoderT) the |values| (4 per entry, in
 // entry order) of every entry of |mesh_data| with the predictions
 // |predict|(entry) returns. CoderT has
 //   bool Value(int context, int32_t predicted, int32_t sign, int32_t *value);
-//   bool Handedness(int context, const std::array<int32_t, 2> &predicted,
+//   bool Handedness(int entry, const std::array<int32_t, 2> &predicted,
 //                   int32_t *w);
-// (the encoder reads *value and *w, the decoder writes them; Value() codes
-// sign * (value - predicted), Handedness() HandednessSymbol()).
+//   bool Copy(int entry, const int32_t *source, int32_t *v);
+// (the encoder reads *value, *w and v, the decoder writes them; Value()
+// codes sign * (value - predicted), Handedness() HandednessSymbol() in
+// kTangentHandednessContext or as an exception, Copy() the 4 components
+// against |source| in kTangentCopyContext, or nothing but an exception
+// where they differ).
 // Entries without a prediction code every component against a coded
 // neighbour's value (else the previous entry's, else the zero tangent);
 // entries predicted from one triangle that already gave a coded neighbour
-// its value code every component against that value. |neighbour_sums|,
-// when not null, receives every entry's TangentNeighbourSum().
+// its value copy that value. |neighbour_sums|, when not null, receives
+// every entry's TangentNeighbourSum().
 template <class MeshDataT, class PredictFn, class CoderT>
 bool CodeGeometricTangents(const MeshDataT &mesh_data,
                            const TangentCodingParameters &params,
@@ -166,7 +255,14 @@ bool CodeGeometricTangents(const MeshDataT &mesh_data,
         }
       }
     }
-    if (!prediction.valid || context == kTangentCopyContext) {
+    if (context == kTangentCopyContext) {
+      if (!coder->Copy(entry, values + kTangentNumComponents * source, v)) {
+        return false;
+      }
+      first_bits[entry] = 1;
+      continue;
+    }
+    if (!prediction.valid) {
       for (int c = 0; c < kTangentNumComponents; ++c) {
         const int32_t predicted =
             source >= 0 ? values[kTangentNumComponents * source + c]
@@ -204,8 +300,7 @@ bool CodeGeometricTangents(const MeshDataT &mesh_data,
     const TangentPredictedValue third = components.Third(v[b1], v[b2]);
     if (!coder->Value(kTangentThirdContext + third.fraction_class,
                       third.value, third.sign, &v[b3]) ||
-        !coder->Handedness(kTangentHandednessContext,
-                           components.PredictHandedness(), &v[3])) {
+        !coder->Handedness(entry, components.PredictHandedness(), &v[3])) {
       return false;
     }
   }
