@@ -70,14 +70,14 @@ struct TangentGrid {
            });
   }
   // The grid coordinate (units of 2^-16) of the unit component |t| on axis
-  // |c|; |t| up to 2^26.
+  // |c|; |t| up to 2^25.
   int64_t Coordinate(int c, int64_t t) const {
-    return offset[c] + RoundedShift(t * scale, kTangentUnitBits);
+    return offset[c] + RoundedShiftHalfUp(t * scale, kTangentUnitBits);
   }
-  // The grid value nearest to |coordinate|.
+  // The grid value nearest to |coordinate| (below 2^61).
   int32_t Round(int64_t coordinate) const {
     return static_cast<int32_t>(std::clamp<int64_t>(
-        RoundedShift(coordinate, kFractionBits), 0, max_value));
+        RoundedShiftHalfUp(coordinate, kFractionBits), 0, max_value));
   }
   // The unit component (kTangentUnit) that grid value |value| on axis |c|
   // stands for, within [-2, 2], rounded toward zero.
@@ -183,18 +183,18 @@ class TangentComponentPredictor {
     negative_third_ = t[b3] < 0;
     positive_handedness_ = (prediction.handedness > 0) != flip_handedness_;
     // The grid coordinates of t / |t|: |t[i]| <= length, so |t[i]| *
-    // reciprocal <= scale * 2^26 <= 2^62.
+    // reciprocal <= scale * 2^25 <= 2^61.
     const int64_t reciprocal =
         (grid_.scale << kReciprocalBits) / prediction.length;
     for (int i = 0; i < 3; ++i) {
-      coordinate_[i] =
-          grid_.offset[i] + RoundedShift(t[i] * reciprocal, kReciprocalBits);
+      coordinate_[i] = grid_.offset[i] +
+                       RoundedShiftHalfUp(t[i] * reciprocal, kReciprocalBits);
     }
     // B[b2] / B[b1] in units of 2^-16 (B below 2^44), within [-1, 1] by the
-    // choice of b1; 0 where B[b1] is too small (about 16 times smaller than
-    // the largest component) to say how b1 turned.
+    // choice of b1; 0 where B[b1] is too small (16 times smaller than B[b3])
+    // to say how b1 turned.
     const uint64_t along = AbsAsUnsigned(b[b1]);
-    ratio_ = along == 0 || along * 16 < MaxAbsBits(b)
+    ratio_ = along * 16 <= AbsAsUnsigned(b[b3]) || along == 0
                  ? 0
                  : (b[b2] * 65536) / b[b1];
   }
@@ -214,8 +214,9 @@ class TangentComponentPredictor {
     const int64_t moved = std::clamp<int64_t>(
         (int64_t{v1} << TangentGrid::kFractionBits) - coordinate_[axes_[0]],
         -kMaxMove, kMaxMove);
-    const int64_t scaled = RoundedShift(moved * gain_, 8);
-    return ValueAt(coordinate_[axes_[1]] + RoundedShift(scaled * ratio_, 16));
+    const int64_t scaled = RoundedShiftHalfUp(moved * gain_, 8);
+    return ValueAt(coordinate_[axes_[1]] +
+                   RoundedShiftHalfUp(scaled * ratio_, 16));
   }
   // The third component that makes the tangent unit length with the values
   // |v1| and |v2| of the first two, with the predicted sign.
@@ -240,7 +241,7 @@ class TangentComponentPredictor {
   }
 
  private:
-  static constexpr int kReciprocalBits = 26;
+  static constexpr int kReciprocalBits = 25;
 
   // The grid value nearest to |coordinate|, with its sign and fraction
   // class (TangentPredictedValue).
@@ -250,11 +251,11 @@ class TangentComponentPredictor {
     const int64_t fraction =
         coordinate - (int64_t{predicted.value} << TangentGrid::kFractionBits);
     predicted.sign = fraction < 0 ? -1 : 1;
+    // |fraction| < 2^14 as one unsigned comparison.
+    constexpr int64_t kQuarter = int64_t{1} << (TangentGrid::kFractionBits - 2);
     predicted.fraction_class =
-        AbsAsUnsigned(fraction) <
-                (uint64_t{1} << (TangentGrid::kFractionBits - 2))
-            ? 0
-            : 1;
+        static_cast<uint64_t>(fraction + (kQuarter - 1)) < 2 * kQuarter - 1 ? 0
+                                                                           : 1;
     return predicted;
   }
 

@@ -111,7 +111,7 @@ class MeshPredictionSchemeGeometricTangentDecoder
         return false;
       }
       const int64_t result = int64_t{predicted} + int64_t{sign} * residual;
-      if (result < 0 || result > max_value_) {
+      if (static_cast<uint64_t>(result) > static_cast<uint64_t>(max_value_)) {
         return false;
       }
       *value = static_cast<int32_t>(result);

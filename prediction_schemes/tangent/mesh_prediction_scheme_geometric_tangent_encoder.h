@@ -244,7 +244,7 @@ MeshPredictionSchemeGeometricTangentEncoder<DataTypeT, TransformT, MeshDataT>::
     const int b1 = components.Axis(0);
     // In units of 2^-8 of a step, capped at 256 steps.
     const int64_t moved = std::clamp<int64_t>(
-        RoundedShift((int64_t{v[b1]} << TangentGrid::kFractionBits) -
+        RoundedShiftHalfUp((int64_t{v[b1]} << TangentGrid::kFractionBits) -
                          components.Coordinate(b1),
                      8),
         -(1 << 16), 1 << 16);
