@@ -30,6 +30,7 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <vector>
 
 #include "draco/attributes/point_attribute.h"
@@ -44,18 +45,12 @@ namespace draco {
 // int32 in the decoder, uint32 in the encoder, the same bits), else from a
 // copy converted once; either way a value costs one address computation
 // instead of PointAttribute::ConvertValue()'s type dispatch.
-// FitBelow() makes Get<true>() return every component minus the smallest,
-// shifted right so that all of them stay below a bound: the face
-// arithmetic then needs no shift per triangle (Get<false>() returns the
-// values as they are, for attributes that already fit).
 template <int N>
 class TangentParentValues {
  public:
   void Init(const PointAttribute &att) {
     att_ = &att;
     copy_.clear();
-    shift_ = 0;
-    min_ = 0;
     if ((att.data_type() == DT_INT32 || att.data_type() == DT_UINT32) &&
         att.byte_stride() >= static_cast<int64_t>(sizeof(int32_t) * N) &&
         att.size() > 0) {
@@ -75,60 +70,16 @@ class TangentParentValues {
     base_ = reinterpret_cast<const uint8_t *>(copy_.data());
     stride_ = sizeof(int32_t) * N;
   }
-
-  // Chooses the shift of Get<true>() that keeps the components below
-  // 2^|bits|; false where none is needed (all of them in [0, 2^bits)).
-  bool FitBelow(int bits) {
-    const size_t size = att_->size();
-    uint32_t any = 0;
-    for (size_t i = 0; i < size; ++i) {
-      for (int c = 0; c < N; ++c) {
-        any |= static_cast<uint32_t>(Component(i, c));
-      }
-    }
-    if (any < (uint32_t{1} << bits)) {
-      shift_ = 0;
-      min_ = 0;
-      return false;
-    }
-    int64_t min = INT32_MAX, max = INT32_MIN;
-    for (size_t i = 0; i < size; ++i) {
-      for (int c = 0; c < N; ++c) {
-        min = std::min<int64_t>(min, Component(i, c));
-        max = std::max<int64_t>(max, Component(i, c));
-      }
-    }
-    min_ = min;
-    shift_ = std::max(0, BitLength(static_cast<uint64_t>(max - min)) - bits);
-    return true;
-  }
-
-  template <bool shifted>
   void Get(PointIndex point, int32_t *value) const {
     std::memcpy(value, base_ + stride_ * att_->mapped_index(point).value(),
                 sizeof(int32_t) * N);
-    if (shifted) {
-      for (int c = 0; c < N; ++c) {
-        value[c] = static_cast<int32_t>(static_cast<uint64_t>(value[c] - min_) >>
-                                        shift_);
-      }
-    }
   }
 
  private:
-  int32_t Component(size_t i, int c) const {
-    int32_t value;
-    std::memcpy(&value, base_ + stride_ * i + sizeof(int32_t) * c,
-                sizeof(value));
-    return value;
-  }
-
   const PointAttribute *att_ = nullptr;
   const uint8_t *base_ = nullptr;
   int64_t stride_ = 0;
   std::vector<int32_t> copy_;
-  int shift_ = 0;
-  int64_t min_ = 0;
 };
 
 // What the predictor says about one tangent.
@@ -250,16 +201,13 @@ class GeometricTangentPredictor {
     *slot = att;
     return true;
   }
-  template <GeometricTangentKind kind, bool shifted>
-  void SumFaces(const MeshDataT &mesh_data);
+  // Fills point_values_ for the points of |mesh|.
+  void GatherPointValues(const Mesh &mesh);
+  // Brings component |c| of every point value below 2^|bits| (minus the
+  // smallest and shifted right) where the largest is not already.
+  void FitBelow(int c, int num_components, int bits);
   template <GeometricTangentKind kind>
-  void SumFaces(const MeshDataT &mesh_data, bool shifted) {
-    if (shifted) {
-      SumFaces<kind, true>(mesh_data);
-    } else {
-      SumFaces<kind, false>(mesh_data);
-    }
-  }
+  void SumFaces(const MeshDataT &mesh_data);
   // The plane normal of |entry| for kMikkTSpace and kUniform, below
   // 2^kPlaneNormalBits.
   TangentVec3 VertexNormal(const MeshDataT &mesh_data, int entry) const;
@@ -269,9 +217,13 @@ class GeometricTangentPredictor {
   const PointAttribute *tex_coords_ = nullptr;
   GeometricTangentKind kind_ = GeometricTangentKind::kMikkTSpace;
   int normal_bits_ = 0;
-  TangentParentValues<3> position_values_;
   TangentParentValues<2> normal_values_;
-  TangentParentValues<2> tex_coord_values_;
+  // Per point: its position and texture coordinate, brought below 2^15 and
+  // 2^14. Not a std::vector: its zeroing would cost as much as the filling.
+  using PointValues = std::array<int32_t, 5>;
+  std::unique_ptr<PointValues[]> point_values_;
+  size_t num_points_ = 0;
+  size_t point_values_capacity_ = 0;
   std::vector<Sums> sums_;
   std::vector<FaceSums> face_sums_;
 };
@@ -281,12 +233,8 @@ void GeometricTangentPredictor<MeshDataT>::ComputeSums(
     const MeshDataT &mesh_data, GeometricTangentKind kind, int normal_bits) {
   kind_ = kind;
   normal_bits_ = normal_bits;
-  position_values_.Init(*positions_);
   normal_values_.Init(*normals_);
-  tex_coord_values_.Init(*tex_coords_);
-  // Both, as one template argument: each is rare.
-  const bool shifted = position_values_.FitBelow(kPositionBits) |
-                       tex_coord_values_.FitBelow(kTexCoordBits);
+  GatherPointValues(*mesh_data.mesh());
   const size_t num_entries = mesh_data.data_to_corner_map()->size();
   sums_.assign(num_entries, Sums());
   const bool count = kind_ == GeometricTangentKind::kFace ||
@@ -295,13 +243,13 @@ void GeometricTangentPredictor<MeshDataT>::ComputeSums(
   face_sums_.assign(count ? num_entries : 0, FaceSums());
   switch (kind_) {
     case GeometricTangentKind::kMikkTSpace:
-      SumFaces<GeometricTangentKind::kMikkTSpace>(mesh_data, shifted);
+      SumFaces<GeometricTangentKind::kMikkTSpace>(mesh_data);
       break;
     case GeometricTangentKind::kUniform:
-      SumFaces<GeometricTangentKind::kUniform>(mesh_data, shifted);
+      SumFaces<GeometricTangentKind::kUniform>(mesh_data);
       break;
     case GeometricTangentKind::kFace:
-      SumFaces<GeometricTangentKind::kFace>(mesh_data, shifted);
+      SumFaces<GeometricTangentKind::kFace>(mesh_data);
       break;
   }
 }
@@ -312,7 +260,61 @@ void GeometricTangentPredictor<MeshDataT>::ComputeSums(
 // coordinates below 2^14 bound the gradient below 2^30 and the normal
 // below 2^31.
 template <class MeshDataT>
-template <GeometricTangentKind kind, bool shifted>
+void GeometricTangentPredictor<MeshDataT>::GatherPointValues(
+    const Mesh &mesh) {
+  TangentParentValues<3> positions;
+  TangentParentValues<2> tex_coords;
+  positions.Init(*positions_);
+  tex_coords.Init(*tex_coords_);
+  const size_t num_points = mesh.num_points();
+  if (point_values_capacity_ < num_points) {
+    point_values_.reset(new PointValues[num_points]);
+    point_values_capacity_ = num_points;
+  }
+  num_points_ = num_points;
+  // The components' bits, as unsigned: a negative one has all of them.
+  uint32_t position_bits = 0, tex_coord_bits = 0;
+  for (PointIndex p(0); p < static_cast<uint32_t>(num_points); ++p) {
+    PointValues &values = point_values_[p.value()];
+    positions.Get(p, &values[0]);
+    tex_coords.Get(p, &values[3]);
+    position_bits |= static_cast<uint32_t>(values[0]) |
+                     static_cast<uint32_t>(values[1]) |
+                     static_cast<uint32_t>(values[2]);
+    tex_coord_bits |=
+        static_cast<uint32_t>(values[3]) | static_cast<uint32_t>(values[4]);
+  }
+  if (position_bits >= (1u << kPositionBits)) {
+    FitBelow(0, 3, kPositionBits);
+  }
+  if (tex_coord_bits >= (1u << kTexCoordBits)) {
+    FitBelow(3, 2, kTexCoordBits);
+  }
+}
+
+template <class MeshDataT>
+void GeometricTangentPredictor<MeshDataT>::FitBelow(int first,
+                                                    int num_components,
+                                                    int bits) {
+  int64_t min = INT32_MAX, max = INT32_MIN;
+  for (size_t p = 0; p < num_points_; ++p) {
+    for (int c = first; c < first + num_components; ++c) {
+      min = std::min<int64_t>(min, point_values_[p][c]);
+      max = std::max<int64_t>(max, point_values_[p][c]);
+    }
+  }
+  const int shift =
+      std::max(0, BitLength(static_cast<uint64_t>(max - min)) - bits);
+  for (size_t p = 0; p < num_points_; ++p) {
+    for (int c = first; c < first + num_components; ++c) {
+      point_values_[p][c] = static_cast<int32_t>(
+          static_cast<uint64_t>(point_values_[p][c] - min) >> shift);
+    }
+  }
+}
+
+template <class MeshDataT>
+template <GeometricTangentKind kind>
 void GeometricTangentPredictor<MeshDataT>::SumFaces(
     const MeshDataT &mesh_data) {
   const Mesh &mesh = *mesh_data.mesh();
@@ -324,15 +326,13 @@ void GeometricTangentPredictor<MeshDataT>::SumFaces(
   const int num_faces = table.num_faces();
   for (int f = 0; f < num_faces; ++f) {
     const Mesh::Face &points = mesh.face(FaceIndex(f));
-    int32_t p[3][3], uv[3][2];
-    for (int k = 0; k < 3; ++k) {
-      position_values_.template Get<shifted>(points[k], p[k]);
-      tex_coord_values_.template Get<shifted>(points[k], uv[k]);
-    }
-    const int64_t du1 = int64_t{uv[1][0]} - uv[0][0];
-    const int64_t dv1 = int64_t{uv[1][1]} - uv[0][1];
-    const int64_t du2 = int64_t{uv[2][0]} - uv[0][0];
-    const int64_t dv2 = int64_t{uv[2][1]} - uv[0][1];
+    const PointValues &p0 = point_values_[points[0].value()];
+    const PointValues &p1 = point_values_[points[1].value()];
+    const PointValues &p2 = point_values_[points[2].value()];
+    const int64_t du1 = int64_t{p1[3]} - p0[3];
+    const int64_t dv1 = int64_t{p1[4]} - p0[4];
+    const int64_t du2 = int64_t{p2[3]} - p0[3];
+    const int64_t dv2 = int64_t{p2[4]} - p0[4];
     const int64_t twice_uv_area = du1 * dv2 - du2 * dv1;
     if (twice_uv_area == 0) {
       continue;
@@ -340,8 +340,8 @@ void GeometricTangentPredictor<MeshDataT>::SumFaces(
     const int orientation = twice_uv_area > 0 ? 1 : -1;
     TangentVec3 e1, e2, gradient;
     for (int i = 0; i < 3; ++i) {
-      e1[i] = int64_t{p[1][i]} - p[0][i];
-      e2[i] = int64_t{p[2][i]} - p[0][i];
+      e1[i] = int64_t{p1[i]} - p0[i];
+      e2[i] = int64_t{p2[i]} - p0[i];
       gradient[i] = orientation * (dv2 * e1[i] - dv1 * e2[i]);
     }
     const TangentVec3 normal = Cross(e1, e2);
@@ -397,7 +397,7 @@ TangentVec3 GeometricTangentPredictor<MeshDataT>::VertexNormal(
   const PointIndex point = mesh_data.mesh()->CornerToPointId(
       (*mesh_data.data_to_corner_map())[entry]);
   int32_t octahedral[2];
-  normal_values_.template Get<false>(point, octahedral);
+  normal_values_.Get(point, octahedral);
   const TangentVec3 normal =
       OctahedralToVector(octahedral[0], octahedral[1], normal_bits_);
   return normal_bits_ <= kPlaneNormalBits
