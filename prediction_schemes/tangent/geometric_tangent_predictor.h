@@ -206,8 +206,18 @@ class GeometricTangentPredictor {
   // Brings component |c| of every point value below 2^|bits| (minus the
   // smallest and shifted right) where the largest is not already.
   void FitBelow(int c, int num_components, int bits);
-  template <GeometricTangentKind kind>
+  // Fills vertex_entry_.
+  void MapVertices(const MeshDataT &mesh_data);
+  template <GeometricTangentKind kind, bool count>
   void SumFaces(const MeshDataT &mesh_data);
+  template <GeometricTangentKind kind>
+  void SumFaces(const MeshDataT &mesh_data, bool count) {
+    if (count) {
+      SumFaces<kind, true>(mesh_data);
+    } else {
+      SumFaces<kind, false>(mesh_data);
+    }
+  }
   // The plane normal of |entry| for kMikkTSpace and kUniform, below
   // 2^kPlaneNormalBits.
   TangentVec3 VertexNormal(const MeshDataT &mesh_data, int entry) const;
@@ -224,6 +234,11 @@ class GeometricTangentPredictor {
   std::unique_ptr<PointValues[]> point_values_;
   size_t num_points_ = 0;
   size_t point_values_capacity_ = 0;
+  // The entry of every vertex of the tangent's corner table, the number of
+  // entries for vertices without one (whose corners then add to the dummy
+  // sums past the last entry).
+  std::vector<uint32_t> vertex_entry_;
+  // Per entry, and one dummy past the last.
   std::vector<Sums> sums_;
   std::vector<FaceSums> face_sums_;
 };
@@ -236,20 +251,21 @@ void GeometricTangentPredictor<MeshDataT>::ComputeSums(
   normal_values_.Init(*normals_);
   GatherPointValues(*mesh_data.mesh());
   const size_t num_entries = mesh_data.data_to_corner_map()->size();
-  sums_.assign(num_entries, Sums());
+  sums_.assign(num_entries + 1, Sums());
+  MapVertices(mesh_data);
   const bool count = kind_ == GeometricTangentKind::kFace ||
                      3 * int64_t{mesh_data.corner_table()->num_faces()} >=
                          kMaxCornersPerEntry;
-  face_sums_.assign(count ? num_entries : 0, FaceSums());
+  face_sums_.assign(count ? num_entries + 1 : 0, FaceSums());
   switch (kind_) {
     case GeometricTangentKind::kMikkTSpace:
-      SumFaces<GeometricTangentKind::kMikkTSpace>(mesh_data);
+      SumFaces<GeometricTangentKind::kMikkTSpace>(mesh_data, count);
       break;
     case GeometricTangentKind::kUniform:
-      SumFaces<GeometricTangentKind::kUniform>(mesh_data);
+      SumFaces<GeometricTangentKind::kUniform>(mesh_data, count);
       break;
     case GeometricTangentKind::kFace:
-      SumFaces<GeometricTangentKind::kFace>(mesh_data);
+      SumFaces<GeometricTangentKind::kFace>(mesh_data, count);
       break;
   }
 }
@@ -314,15 +330,33 @@ void GeometricTangentPredictor<MeshDataT>::FitBelow(int first,
 }
 
 template <class MeshDataT>
-template <GeometricTangentKind kind>
+void GeometricTangentPredictor<MeshDataT>::MapVertices(
+    const MeshDataT &mesh_data) {
+  const std::vector<int32_t> &vertex_to_data = *mesh_data.vertex_to_data_map();
+  const uint32_t num_entries = static_cast<uint32_t>(sums_.size()) - 1;
+  vertex_entry_.resize(mesh_data.corner_table()->num_vertices());
+  for (size_t v = 0; v < vertex_entry_.size(); ++v) {
+    const uint32_t entry = v < vertex_to_data.size()
+                               ? static_cast<uint32_t>(vertex_to_data[v])
+                               : num_entries;
+    vertex_entry_[v] = entry < num_entries ? entry : num_entries;
+  }
+}
+
+// Per triangle: MikkTSpace's tangent (InitTriInfo(): vOs with the sign of
+// the UV orientation), normalised, and its corner angles (EvalTspace()),
+// added to the entries of its corners. Positions below 2^15 and texture
+// coordinates below 2^14 bound the gradient below 2^30 and the normal
+// below 2^31.
+template <class MeshDataT>
+template <GeometricTangentKind kind, bool count>
 void GeometricTangentPredictor<MeshDataT>::SumFaces(
     const MeshDataT &mesh_data) {
   const Mesh &mesh = *mesh_data.mesh();
   const auto &table = *mesh_data.corner_table();
-  const std::vector<int32_t> &vertex_to_data = *mesh_data.vertex_to_data_map();
-  const uint32_t num_vertices = static_cast<uint32_t>(vertex_to_data.size());
-  const uint32_t num_entries = static_cast<uint32_t>(sums_.size());
-  const bool count = !face_sums_.empty();
+  const uint32_t *const vertex_entry = vertex_entry_.data();
+  const uint32_t num_vertices = static_cast<uint32_t>(vertex_entry_.size());
+  Sums *const all_sums = sums_.data();
   const int num_faces = table.num_faces();
   for (int f = 0; f < num_faces; ++f) {
     const Mesh::Face &points = mesh.face(FaceIndex(f));
@@ -330,19 +364,23 @@ void GeometricTangentPredictor<MeshDataT>::SumFaces(
     const PointValues &p1 = point_values_[points[1].value()];
     const PointValues &p2 = point_values_[points[2].value()];
     const int64_t du1 = int64_t{p1[3]} - p0[3];
-    const int64_t dv1 = int64_t{p1[4]} - p0[4];
+    int64_t dv1 = int64_t{p1[4]} - p0[4];
     const int64_t du2 = int64_t{p2[3]} - p0[3];
-    const int64_t dv2 = int64_t{p2[4]} - p0[4];
+    int64_t dv2 = int64_t{p2[4]} - p0[4];
     const int64_t twice_uv_area = du1 * dv2 - du2 * dv1;
     if (twice_uv_area == 0) {
       continue;
     }
     const int orientation = twice_uv_area > 0 ? 1 : -1;
+    if (orientation < 0) {
+      dv1 = -dv1;
+      dv2 = -dv2;
+    }
     TangentVec3 e1, e2, gradient;
     for (int i = 0; i < 3; ++i) {
       e1[i] = int64_t{p1[i]} - p0[i];
       e2[i] = int64_t{p2[i]} - p0[i];
-      gradient[i] = orientation * (dv2 * e1[i] - dv1 * e2[i]);
+      gradient[i] = dv2 * e1[i] - dv1 * e2[i];
     }
     const TangentVec3 normal = Cross(e1, e2);
     const uint64_t gradient_squared = SquaredLength(gradient);
@@ -360,14 +398,12 @@ void GeometricTangentPredictor<MeshDataT>::SumFaces(
       unit_normal = ToUnitLength(normal, normal_squared);
     }
     for (int k = 0; k < 3; ++k) {
-      const uint32_t vertex = table.Vertex(CornerIndex(3 * f + k)).value();
-      if (vertex >= num_vertices) {
-        continue;
-      }
-      const uint32_t entry = vertex_to_data[vertex];
-      if (entry >= num_entries) {
-        continue;
-      }
+      const uint32_t vertex =
+          table.ConfidentVertex(CornerIndex(3 * f + k)).value();
+      // Entries of no vertex add to the dummy sums past the last entry.
+      const uint32_t entry = vertex < num_vertices
+                                 ? vertex_entry[vertex]
+                                 : static_cast<uint32_t>(sums_.size()) - 1;
       if (count) {
         FaceSums &face_sums = face_sums_[entry];
         if (face_sums.num_faces >= kMaxCornersPerEntry) {
@@ -381,7 +417,7 @@ void GeometricTangentPredictor<MeshDataT>::SumFaces(
           }
         }
       }
-      Sums &sums = sums_[entry];
+      Sums &sums = all_sums[entry];
       const int64_t w = weight[k];
       for (int i = 0; i < 3; ++i) {
         sums.direction[i] += w * direction[i];

@@ -100,17 +100,18 @@ inline uint64_t SquaredLength(const TangentVec3 &v) {
          static_cast<uint64_t>(v[2] * v[2]);
 }
 
-// |v| scaled to kTangentUnit length (rounded toward zero), given its squared
-// length |squared| > 0; components below 2^31. The length's rounding makes
-// the result up to 1 / floor(|v|) too long; the direction is exact within
+// |v| scaled to kTangentUnit length (rounded), given its squared length
+// |squared| > 0; components below 2^31. The length's rounding makes the
+// result up to 1 / floor(|v|) too long; the direction is exact within
 // 2^-24.
 inline TangentVec3 ToUnitLength(const TangentVec3 &v, uint64_t squared) {
-  // At least 1 and at least every |v[i]|, so |v[i]| * reciprocal <= 2^62.
+  // At least 1 and at least every |v[i]|, so |v[i]| * reciprocal <= 2^61.
   const int64_t length = static_cast<int64_t>(IntSqrtFloor(squared));
-  const int64_t reciprocal = (int64_t{1} << 62) / length;
-  constexpr int64_t kDivisor = int64_t{1} << (62 - kTangentUnitBits);
-  return {v[0] * reciprocal / kDivisor, v[1] * reciprocal / kDivisor,
-          v[2] * reciprocal / kDivisor};
+  const int64_t reciprocal = (int64_t{1} << 61) / length;
+  constexpr int kShift = 61 - kTangentUnitBits;
+  return {RoundedShiftHalfUp(v[0] * reciprocal, kShift),
+          RoundedShiftHalfUp(v[1] * reciprocal, kShift),
+          RoundedShiftHalfUp(v[2] * reciprocal, kShift)};
 }
 
 // The normal that Draco's octahedral coordinates (|s|, |t|) with
