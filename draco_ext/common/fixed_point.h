@@ -90,6 +90,17 @@ inline int64_t RoundedShift(int64_t x, int bits) {
   return x < 0 ? -rounded : rounded;
 }
 
+// round(x / 2^bits) with halves rounded up (floor(x / 2^bits + 1/2)), for
+// |x| < 2^62 and 0 < bits < 62: the value biased to a non-negative one (no
+// shift of a negative number) and shifted once, without a branch.
+inline int64_t RoundedShiftHalfUp(int64_t x, int bits) {
+  constexpr uint64_t kBias = uint64_t{1} << 62;
+  return static_cast<int64_t>((static_cast<uint64_t>(x) + kBias +
+                               (uint64_t{1} << (bits - 1))) >>
+                              bits) -
+         static_cast<int64_t>(kBias >> bits);
+}
+
 // round(a * b / 2^bits) with halves away from zero, for b >= 0, 0 < bits <
 // 63 and |a| * b < 2^63: the fixed-point product with a precomputed
 // reciprocal, which replaces a division.
@@ -125,7 +136,8 @@ inline int64_t DivideBySmallCount(int64_t x, int n) {
   }
 }
 
-// floor(sqrt(value)) for value < 2^62, exact on every platform: the double
+// floor(sqrt(value)) for value < 3 * 2^62 (roots below 2^31.8, so that
+// the corrections' squares fit), exact on every platform: the double
 // square root is only an estimate (within one of the truth for these
 // values), which integer comparisons then correct, so the result is the
 // mathematically defined integer whatever the floating point unit does.

@@ -270,8 +270,8 @@ bool EncodeRansTokens(const RansTokenTable &table,
   return buffer->Encode(data.data(), size);
 }
 
-bool DecodeRansTokens(const RansTokenTable &table, uint32_t count,
-                      DecoderBuffer *buffer, std::vector<uint32_t> *tokens) {
+bool StartRansTokens(const RansTokenTable &table, DecoderBuffer *buffer,
+                     RAnsDecoder<kRansTokenPrecisionBits> *decoder) {
   uint32_t size;
   if (!DecodeVarint(&size, buffer) || size == 0 ||
       size > static_cast<uint64_t>(buffer->remaining_size()) ||
@@ -279,18 +279,26 @@ bool DecodeRansTokens(const RansTokenTable &table, uint32_t count,
     return false;
   }
   const std::vector<uint32_t> &probabilities = table.probabilities();
-  RAnsDecoder<kRansTokenPrecisionBits> decoder;
-  if (!decoder.rans_build_look_up_table(
+  if (!decoder->rans_build_look_up_table(
           probabilities.data(), static_cast<uint32_t>(probabilities.size())) ||
-      decoder.read_init(reinterpret_cast<const uint8_t *>(buffer->data_head()),
-                        static_cast<int>(size)) != 0) {
+      decoder->read_init(reinterpret_cast<const uint8_t *>(buffer->data_head()),
+                         static_cast<int>(size)) != 0) {
+    return false;
+  }
+  buffer->Advance(size);
+  return true;
+}
+
+bool DecodeRansTokens(const RansTokenTable &table, uint32_t count,
+                      DecoderBuffer *buffer, std::vector<uint32_t> *tokens) {
+  RAnsDecoder<kRansTokenPrecisionBits> decoder;
+  if (!StartRansTokens(table, buffer, &decoder)) {
     return false;
   }
   tokens->resize(count);
   for (uint32_t &token : *tokens) {
     token = static_cast<uint32_t>(decoder.rans_read());
   }
-  buffer->Advance(size);
   return true;
 }
 

@@ -42,6 +42,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "draco/compression/entropy/ans.h"
 #include "draco/core/decoder_buffer.h"
 #include "draco/core/encoder_buffer.h"
 
@@ -113,6 +114,12 @@ class RansTokenTable {
 bool EncodeRansTokens(const RansTokenTable &table,
                       const std::vector<uint32_t> &tokens,
                       EncoderBuffer *buffer);
+// The rANS decoder of the tokens written by EncodeRansTokens(): reads the
+// byte length, points |decoder| at the bytes (which must outlive it) and
+// moves |buffer| past them; the tokens are then |decoder|->rans_read(), in
+// order. Fails on an inconsistent table or length.
+bool StartRansTokens(const RansTokenTable &table, DecoderBuffer *buffer,
+                     RAnsDecoder<kRansTokenPrecisionBits> *decoder);
 // Reads |count| tokens written by EncodeRansTokens().
 bool DecodeRansTokens(const RansTokenTable &table, uint32_t count,
                       DecoderBuffer *buffer, std::vector<uint32_t> *tokens);

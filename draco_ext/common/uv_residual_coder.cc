@@ -223,11 +223,12 @@ bool UvResidualDecoder::DecodeTables(
   }
   buffer->Advance(table_bytes);
   for (int t = 0; t < kMaxResidualContexts; ++t) {
-    next_[t] = 0;
-    tokens_[t].clear();
-    if (t < num_tables && counts[t] > 0 &&
-        !DecodeRansTokens(tables[t], counts[t], buffer, &tokens_[t])) {
-      return false;
+    remaining_[t] = 0;
+    if (t < num_tables && counts[t] > 0) {
+      if (!StartRansTokens(tables[t], buffer, &decoders_[t])) {
+        return false;
+      }
+      remaining_[t] = counts[t];
     }
   }
   return true;

@@ -48,9 +48,11 @@
 #include <vector>
 
 #include "draco/compression/bit_coders/direct_bit_decoder.h"
+#include "draco/compression/entropy/ans.h"
 #include "draco/core/bit_utils.h"
 #include "draco/core/decoder_buffer.h"
 #include "draco/core/encoder_buffer.h"
+#include "draco_ext/common/rans_token_table.h"
 
 namespace draco {
 
@@ -114,15 +116,19 @@ class UvResidualDecoder {
   // context's stream or the raw bits are exhausted or a token is invalid.
   // Inline: called twice per texture coordinate; the call alone cost
   // 0.4-0.6 % of a whole decode.
+  // Tokens are rANS-decoded here, as they are asked for, rather than all
+  // into arrays first (an array's store and load cost as much again).
   bool Next(int context, int32_t *residual) {
-    if (context < 0 || context >= num_contexts_) {
+    if (static_cast<unsigned>(context) >=
+        static_cast<unsigned>(num_contexts_)) {
       return false;
     }
     const int group = table_of_[context];
-    if (next_[group] >= tokens_[group].size()) {
+    if (remaining_[group] == 0) {
       return false;
     }
-    const uint32_t token = tokens_[group][next_[group]++];
+    --remaining_[group];
+    const uint32_t token = static_cast<uint32_t>(decoders_[group].rans_read());
     if (token >= kUvResidualDirectTokens) {
       return DecodeSplitToken(token, residual);
     }
@@ -134,14 +140,17 @@ class UvResidualDecoder {
   // The residual of a token >= kUvResidualDirectTokens and its raw bits.
   bool DecodeSplitToken(uint32_t token, int32_t *residual);
 
-  // Reads the tables and tokens of the |counts| after the table starts.
+  // Reads the tables of the |counts| after the table starts and starts
+  // their token decoders.
   bool DecodeTables(const std::array<uint32_t, kMaxResidualContexts> &counts,
                     int num_tables, DecoderBuffer *buffer);
 
   int num_contexts_;
   std::array<uint8_t, kMaxResidualContexts> table_of_ = {};
-  std::array<std::vector<uint32_t>, kMaxResidualContexts> tokens_;
-  std::array<size_t, kMaxResidualContexts> next_ = {};
+  // Per table: the tokens not yet read and their decoder.
+  std::array<uint32_t, kMaxResidualContexts> remaining_ = {};
+  std::array<RAnsDecoder<kRansTokenPrecisionBits>, kMaxResidualContexts>
+      decoders_;
   DirectBitDecoder raw_bits_;
 };
 

@@ -70,14 +70,14 @@ struct TangentGrid {
            });
   }
   // The grid coordinate (units of 2^-16) of the unit component |t| on axis
-  // |c|; |t| up to 2^26.
+  // |c|; |t| up to 2^25.
   int64_t Coordinate(int c, int64_t t) const {
-    return offset[c] + RoundedShift(t * scale, kTangentUnitBits);
+    return offset[c] + RoundedShiftHalfUp(t * scale, kTangentUnitBits);
   }
-  // The grid value nearest to |coordinate|.
+  // The grid value nearest to |coordinate| (below 2^61).
   int32_t Round(int64_t coordinate) const {
     return static_cast<int32_t>(std::clamp<int64_t>(
-        RoundedShift(coordinate, kFractionBits), 0, max_value));
+        RoundedShiftHalfUp(coordinate, kFractionBits), 0, max_value));
   }
   // The unit component (kTangentUnit) that grid value |value| on axis |c|
   // stands for, within [-2, 2], rounded toward zero.
@@ -155,108 +155,120 @@ struct TangentCodingParameters {
 };
 
 // The predictions of one entry's components, in coding order. Usage, for an
-// entry with a valid prediction: Begin(), then for step 0, 1, 2 Axis(step)
-// and Predict(step, values) with |values| holding the components of the
-// earlier steps, then the handedness through PredictHandedness().
+// entry with a valid prediction: Begin(), then First(), Second() and
+// Third() for the components of axes Axis(0), Axis(1) and Axis(2), each
+// given the values coded before, then the handedness through
+// PredictHandedness().
 class TangentComponentPredictor {
  public:
   explicit TangentComponentPredictor(const TangentCodingParameters &params)
-      : params_(params),
+      : grid_(params.grid),
+        gain_(params.shift_gain),
+        flip_handedness_(params.flip_handedness),
         handedness_{params.grid.Round(params.grid.Coordinate(3, kTangentUnit)),
                     params.grid.Round(
                         params.grid.Coordinate(3, -kTangentUnit))} {}
 
   void Begin(const GeometricTangentPrediction &prediction) {
-    prediction_ = &prediction;
     const TangentVec3 &t = prediction.tangent;
     const TangentVec3 &b = prediction.bitangent;
-    int b3 = 0;
-    for (int i = 1; i < 3; ++i) {
-      if (AbsAsUnsigned(t[i]) > AbsAsUnsigned(t[b3])) {
-        b3 = i;
-      }
-    }
-    int b1 = (b3 + 1) % 3, b2 = (b3 + 2) % 3;
+    const uint64_t t0 = AbsAsUnsigned(t[0]), t1 = AbsAsUnsigned(t[1]),
+                   t2 = AbsAsUnsigned(t[2]);
+    const int b3 = t1 > t0 ? (t2 > t1 ? 2 : 1) : (t2 > t0 ? 2 : 0);
+    int b1 = b3 == 2 ? 0 : b3 + 1, b2 = b3 == 0 ? 2 : b3 - 1;
     if (AbsAsUnsigned(b[b2]) > AbsAsUnsigned(b[b1])) {
       std::swap(b1, b2);
     }
     axes_ = {b1, b2, b3};
+    negative_third_ = t[b3] < 0;
+    positive_handedness_ = (prediction.handedness > 0) != flip_handedness_;
+    // The grid coordinates of t / |t|: |t[i]| <= length, so |t[i]| *
+    // reciprocal <= scale * 2^25 <= 2^61.
+    const int64_t reciprocal =
+        (grid_.scale << kReciprocalBits) / prediction.length;
     for (int i = 0; i < 3; ++i) {
-      coordinate_[i] = params_.grid.Coordinate(i, t[i]);
+      coordinate_[i] = grid_.offset[i] +
+                       RoundedShiftHalfUp(t[i] * reciprocal, kReciprocalBits);
     }
-    // B[b2] / B[b1] in units of 2^-16, within [-1, 1] by the choice of b1;
-    // 0 where B[b1] is too small (about 16 times smaller than the largest
-    // component) to say how b1 turned.
-    const TangentVec3 bitangent =
-        ShiftRight(b, ShiftBelow(MaxAbsBits(b), 30));
-    const uint64_t along = AbsAsUnsigned(bitangent[b1]);
-    ratio_ = along == 0 || along * 16 < MaxAbsBits(bitangent)
+    // B[b2] / B[b1] in units of 2^-16 (B below 2^44), within [-1, 1] by the
+    // choice of b1; 0 where B[b1] is too small (16 times smaller than B[b3])
+    // to say how b1 turned.
+    const uint64_t along = AbsAsUnsigned(b[b1]);
+    ratio_ = along * 16 <= AbsAsUnsigned(b[b3]) || along == 0
                  ? 0
-                 : (bitangent[b2] * 65536) / bitangent[b1];
+                 : (b[b2] * 65536) / b[b1];
   }
   int Axis(int step) const { return axes_[step]; }
+  // The grid coordinate of the predicted tangent on axis |axis|.
+  int64_t Coordinate(int axis) const { return coordinate_[axis]; }
 
-  // The predicted value of component Axis(step) given |values| (indexed by
-  // axis) of the steps before.
-  TangentPredictedValue Predict(int step, const int32_t *values) const {
-    const int64_t coordinate = step == 0   ? coordinate_[axes_[0]]
-                               : step == 1 ? SecondCoordinate(values)
-                                           : ThirdCoordinate(values);
-    TangentPredictedValue predicted;
-    predicted.value = params_.grid.Round(coordinate);
-    const int64_t fraction =
-        coordinate - (int64_t{predicted.value} << TangentGrid::kFractionBits);
-    predicted.sign = fraction < 0 ? -1 : 1;
-    predicted.fraction_class =
-        AbsAsUnsigned(fraction) < (uint64_t{1} << (TangentGrid::kFractionBits - 2))
-            ? 0
-            : 1;
-    return predicted;
+  // The first component: the prediction, rounded.
+  TangentPredictedValue First() const {
+    return ValueAt(coordinate_[axes_[0]]);
   }
-
-  // The predicted w and its opposite.
-  std::array<int32_t, 2> PredictHandedness() const {
-    const bool positive =
-        (prediction_->handedness > 0) != params_.flip_handedness;
-    return positive ? handedness_
-                    : std::array<int32_t, 2>{handedness_[1], handedness_[0]};
-  }
-
- private:
-  // Eq. (1): b2 + gain * (v1 - c1) * B[b2] / B[b1], where v1 - c1 is how
-  // far the coded b1 lies from the predicted coordinate.
-  int64_t SecondCoordinate(const int32_t *values) const {
-    const int b1 = axes_[0], b2 = axes_[1];
+  // Eq. (1): the second component moved along the bitangent by gain * (v1
+  // - c1) * B[b2] / B[b1], where v1 - c1 is how far the first component's
+  // value |v1| lies from its predicted coordinate.
+  TangentPredictedValue Second(int32_t v1) const {
     constexpr int64_t kMaxMove = int64_t{1} << 36;
     const int64_t moved = std::clamp<int64_t>(
-        (int64_t{values[b1]} << TangentGrid::kFractionBits) - coordinate_[b1],
+        (int64_t{v1} << TangentGrid::kFractionBits) - coordinate_[axes_[0]],
         -kMaxMove, kMaxMove);
-    const int64_t scaled = RoundedShift(moved * params_.shift_gain, 8);
-    return coordinate_[b2] + RoundedShift(scaled * ratio_, 16);
+    const int64_t scaled = RoundedShiftHalfUp(moved * gain_, 8);
+    return ValueAt(coordinate_[axes_[1]] +
+                   RoundedShiftHalfUp(scaled * ratio_, 16));
   }
-
-  // The b3 that makes the tangent unit length, with the predicted sign.
-  int64_t ThirdCoordinate(const int32_t *values) const {
-    const int b1 = axes_[0], b2 = axes_[1], b3 = axes_[2];
-    const int64_t x1 = params_.grid.UnitComponent(b1, values[b1]);
-    const int64_t x2 = params_.grid.UnitComponent(b2, values[b2]);
+  // The third component that makes the tangent unit length with the values
+  // |v1| and |v2| of the first two, with the predicted sign.
+  TangentPredictedValue Third(int32_t v1, int32_t v2) const {
+    const int64_t x1 = grid_.UnitComponent(axes_[0], v1);
+    const int64_t x2 = grid_.UnitComponent(axes_[1], v2);
     const int64_t rest = kTangentUnit * kTangentUnit - x1 * x1 - x2 * x2;
     int64_t x3 = rest > 0 ? static_cast<int64_t>(
                                 IntSqrtFloor(static_cast<uint64_t>(rest)))
                           : 0;
-    if (prediction_->tangent[b3] < 0) {
+    if (negative_third_) {
       x3 = -x3;
     }
-    return params_.grid.Coordinate(b3, x3);
+    return ValueAt(grid_.Coordinate(axes_[2], x3));
   }
 
-  const TangentCodingParameters &params_;
+  // The predicted w and its opposite.
+  std::array<int32_t, 2> PredictHandedness() const {
+    return positive_handedness_
+               ? handedness_
+               : std::array<int32_t, 2>{handedness_[1], handedness_[0]};
+  }
+
+ private:
+  static constexpr int kReciprocalBits = 25;
+
+  // The grid value nearest to |coordinate|, with its sign and fraction
+  // class (TangentPredictedValue).
+  TangentPredictedValue ValueAt(int64_t coordinate) const {
+    TangentPredictedValue predicted;
+    predicted.value = grid_.Round(coordinate);
+    const int64_t fraction =
+        coordinate - (int64_t{predicted.value} << TangentGrid::kFractionBits);
+    predicted.sign = fraction < 0 ? -1 : 1;
+    // |fraction| < 2^14 as one unsigned comparison.
+    constexpr int64_t kQuarter = int64_t{1} << (TangentGrid::kFractionBits - 2);
+    predicted.fraction_class =
+        static_cast<uint64_t>(fraction + (kQuarter - 1)) < 2 * kQuarter - 1 ? 0
+                                                                           : 1;
+    return predicted;
+  }
+
+  const TangentGrid grid_;
+  const int64_t gain_;
+  const bool flip_handedness_;
   // The grid values of w = +1 and w = -1.
   const std::array<int32_t, 2> handedness_;
-  const GeometricTangentPrediction *prediction_ = nullptr;
   std::array<int, 3> axes_ = {0, 1, 2};
   std::array<int64_t, 3> coordinate_ = {0, 0, 0};
   int64_t ratio_ = 0;
+  bool negative_third_ = false;
+  bool positive_handedness_ = true;
 };
 
 // The w symbol of value |w| given the predicted value and its opposite

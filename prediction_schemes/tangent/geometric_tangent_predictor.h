@@ -30,6 +30,7 @@
 #include <array>
 #include <cstdint>
 #include <cstring>
+#include <memory>
 #include <vector>
 
 #include "draco/attributes/point_attribute.h"
@@ -39,13 +40,58 @@
 
 namespace draco {
 
+// The integer components of a parent attribute by point. Read in place
+// where the attribute holds 4-byte integers (Draco's portable attributes:
+// int32 in the decoder, uint32 in the encoder, the same bits), else from a
+// copy converted once; either way a value costs one address computation
+// instead of PointAttribute::ConvertValue()'s type dispatch.
+template <int N>
+class TangentParentValues {
+ public:
+  void Init(const PointAttribute &att) {
+    att_ = &att;
+    copy_.clear();
+    if ((att.data_type() == DT_INT32 || att.data_type() == DT_UINT32) &&
+        att.byte_stride() >= static_cast<int64_t>(sizeof(int32_t) * N) &&
+        att.size() > 0) {
+      base_ = att.GetAddress(AttributeValueIndex(0));
+      stride_ = att.byte_stride();
+      return;
+    }
+    copy_.resize(att.size() * N);
+    for (AttributeValueIndex i(0); i < static_cast<uint32_t>(att.size()); ++i) {
+      int64_t value[N] = {};
+      att.ConvertValue(i, N, value);
+      for (int c = 0; c < N; ++c) {
+        copy_[N * i.value() + c] = static_cast<int32_t>(std::clamp<int64_t>(
+            value[c], INT32_MIN, INT32_MAX));
+      }
+    }
+    base_ = reinterpret_cast<const uint8_t *>(copy_.data());
+    stride_ = sizeof(int32_t) * N;
+  }
+  void Get(PointIndex point, int32_t *value) const {
+    std::memcpy(value, base_ + stride_ * att_->mapped_index(point).value(),
+                sizeof(int32_t) * N);
+  }
+
+ private:
+  const PointAttribute *att_ = nullptr;
+  const uint8_t *base_ = nullptr;
+  int64_t stride_ = 0;
+  std::vector<int32_t> copy_;
+};
+
 // What the predictor says about one tangent.
 struct GeometricTangentPrediction {
   // False when no triangle around the vertex has a UV gradient (all of them
   // degenerate in 3D or in UV); the other members are then meaningless.
   bool valid = false;
-  TangentVec3 tangent = {0, 0, 0};    // Unit (kTangentUnit).
-  // plane normal x tangent, in any length up to 2^50: only its direction
+  // The predicted direction, components below 2^31, and its length
+  // (rounded down, at least 1).
+  TangentVec3 tangent = {0, 0, 0};
+  int64_t length = 1;
+  // plane normal x tangent, components below 2^44: only its direction
   // serves.
   TangentVec3 bitangent = {0, 0, 0};
   // +1 where the vertex's UV triangles are counter-clockwise (by weight),
@@ -75,6 +121,11 @@ struct GeometricTangentPrediction {
 // kUniform project it onto the plane of the vertex normal, kFace keeps it
 // and takes the plane of the mean triangle normal instead; the handedness
 // is the orientation with the larger weight.
+//
+// Positions are taken below 2^15 and texture coordinates below 2^14
+// (shifted there once per mesh where they are not, as with more than 15
+// and 14 quantisation bits), so that a triangle's products fit 64 bits
+// without a shift of its own.
 //
 // Weak where the writer grouped corners differently from the tangent's
 // Draco value (a tangent value shared across a UV seam sums two groups,
@@ -120,19 +171,27 @@ class GeometricTangentPredictor {
                                      int entry) const;
 
  private:
-  struct Face {
-    TangentVec3 direction;  // Unit dP/du.
-    TangentVec3 normal;     // Unit triangle normal (kFace only).
-    std::array<int32_t, 3> weight;
-    int orientation;        // +1, -1; 0: no gradient.
-  };
+  // Positions and texture coordinates are brought below these (see above).
+  static constexpr int kPositionBits = 15;
+  static constexpr int kTexCoordBits = 14;
+  // Plane normals are shifted below 2^kPlaneNormalBits.
+  static constexpr int kPlaneNormalBits = 12;
+
   struct Sums {
     TangentVec3 direction = {0, 0, 0};
-    TangentVec3 normal = {0, 0, 0};  // kFace only.
     int64_t orientation = 0;  // Sum of weight * orientation.
+  };
+  // kFace's sums besides: the unit normals, the corners and the last one's
+  // face. The counts also guard the others' sums in meshes where an entry
+  // could reach kMaxCornersPerEntry.
+  struct FaceSums {
+    TangentVec3 normal = {0, 0, 0};
     int32_t num_faces = 0;
     int32_t last_face = -1;
   };
+  // A vertex of more corners than this would let the sums overflow; no real
+  // mesh comes near it.
+  static constexpr int32_t kMaxCornersPerEntry = 1 << 20;
 
   static bool Take(const PointAttribute *att, int num_components,
                    const PointAttribute **slot) {
@@ -142,31 +201,46 @@ class GeometricTangentPredictor {
     *slot = att;
     return true;
   }
-  // The value of |att| at |point|.
-  template <int N>
-  static std::array<int64_t, N> ValueAt(const PointAttribute &att,
-                                        PointIndex point) {
-    std::array<int64_t, N> value{};
-    const AttributeValueIndex index = att.mapped_index(point);
-    if (att.data_type() == DT_INT32) {
-      int32_t raw[N];
-      std::memcpy(raw, att.GetAddress(index), sizeof(raw));
-      for (int i = 0; i < N; ++i) {
-        value[i] = raw[i];
-      }
+  // Fills point_values_ for the points of |mesh|.
+  void GatherPointValues(const Mesh &mesh);
+  // Brings component |c| of every point value below 2^|bits| (minus the
+  // smallest and shifted right) where the largest is not already.
+  void FitBelow(int c, int num_components, int bits);
+  // Fills vertex_entry_.
+  void MapVertices(const MeshDataT &mesh_data);
+  template <GeometricTangentKind kind, bool count>
+  void SumFaces(const MeshDataT &mesh_data);
+  template <GeometricTangentKind kind>
+  void SumFaces(const MeshDataT &mesh_data, bool count) {
+    if (count) {
+      SumFaces<kind, true>(mesh_data);
     } else {
-      att.ConvertValue(index, N, value.data());
+      SumFaces<kind, false>(mesh_data);
     }
-    return value;
   }
-  bool ComputeFace(const Mesh &mesh, FaceIndex face, Face *result) const;
+  // The plane normal of |entry| for kMikkTSpace and kUniform, below
+  // 2^kPlaneNormalBits.
+  TangentVec3 VertexNormal(const MeshDataT &mesh_data, int entry) const;
 
   const PointAttribute *positions_ = nullptr;
   const PointAttribute *normals_ = nullptr;
   const PointAttribute *tex_coords_ = nullptr;
   GeometricTangentKind kind_ = GeometricTangentKind::kMikkTSpace;
   int normal_bits_ = 0;
+  TangentParentValues<2> normal_values_;
+  // Per point: its position and texture coordinate, brought below 2^15 and
+  // 2^14. Not a std::vector: its zeroing would cost as much as the filling.
+  using PointValues = std::array<int32_t, 5>;
+  std::unique_ptr<PointValues[]> point_values_;
+  size_t num_points_ = 0;
+  size_t point_values_capacity_ = 0;
+  // The entry of every vertex of the tangent's corner table, the number of
+  // entries for vertices without one (whose corners then add to the dummy
+  // sums past the last entry).
+  std::vector<uint32_t> vertex_entry_;
+  // Per entry, and one dummy past the last.
   std::vector<Sums> sums_;
+  std::vector<FaceSums> face_sums_;
 };
 
 template <class MeshDataT>
@@ -174,138 +248,229 @@ void GeometricTangentPredictor<MeshDataT>::ComputeSums(
     const MeshDataT &mesh_data, GeometricTangentKind kind, int normal_bits) {
   kind_ = kind;
   normal_bits_ = normal_bits;
-  const auto *const table = mesh_data.corner_table();
-  const auto &vertex_to_data = *mesh_data.vertex_to_data_map();
-  const int num_entries =
-      static_cast<int>(mesh_data.data_to_corner_map()->size());
-  sums_.assign(num_entries, Sums());
-  // A vertex of more corners than this would let the sums overflow; no
-  // real mesh comes near it.
-  constexpr int32_t kMaxCornersPerEntry = 1 << 20;
-  const int num_faces = table->num_faces();
-  Face face;
-  for (int f = 0; f < num_faces; ++f) {
-    if (!ComputeFace(*mesh_data.mesh(), FaceIndex(f), &face)) {
-      continue;
+  normal_values_.Init(*normals_);
+  GatherPointValues(*mesh_data.mesh());
+  const size_t num_entries = mesh_data.data_to_corner_map()->size();
+  sums_.assign(num_entries + 1, Sums());
+  MapVertices(mesh_data);
+  const bool count = kind_ == GeometricTangentKind::kFace ||
+                     3 * int64_t{mesh_data.corner_table()->num_faces()} >=
+                         kMaxCornersPerEntry;
+  face_sums_.assign(count ? num_entries + 1 : 0, FaceSums());
+  switch (kind_) {
+    case GeometricTangentKind::kMikkTSpace:
+      SumFaces<GeometricTangentKind::kMikkTSpace>(mesh_data, count);
+      break;
+    case GeometricTangentKind::kUniform:
+      SumFaces<GeometricTangentKind::kUniform>(mesh_data, count);
+      break;
+    case GeometricTangentKind::kFace:
+      SumFaces<GeometricTangentKind::kFace>(mesh_data, count);
+      break;
+  }
+}
+
+// Per triangle: MikkTSpace's tangent (InitTriInfo(): vOs with the sign of
+// the UV orientation), normalised, and its corner angles (EvalTspace()),
+// added to the entries of its corners. Positions below 2^15 and texture
+// coordinates below 2^14 bound the gradient below 2^30 and the normal
+// below 2^31.
+template <class MeshDataT>
+void GeometricTangentPredictor<MeshDataT>::GatherPointValues(
+    const Mesh &mesh) {
+  TangentParentValues<3> positions;
+  TangentParentValues<2> tex_coords;
+  positions.Init(*positions_);
+  tex_coords.Init(*tex_coords_);
+  const size_t num_points = mesh.num_points();
+  if (point_values_capacity_ < num_points) {
+    point_values_.reset(new PointValues[num_points]);
+    point_values_capacity_ = num_points;
+  }
+  num_points_ = num_points;
+  // The components' bits, as unsigned: a negative one has all of them.
+  uint32_t position_bits = 0, tex_coord_bits = 0;
+  for (PointIndex p(0); p < static_cast<uint32_t>(num_points); ++p) {
+    PointValues &values = point_values_[p.value()];
+    positions.Get(p, &values[0]);
+    tex_coords.Get(p, &values[3]);
+    position_bits |= static_cast<uint32_t>(values[0]) |
+                     static_cast<uint32_t>(values[1]) |
+                     static_cast<uint32_t>(values[2]);
+    tex_coord_bits |=
+        static_cast<uint32_t>(values[3]) | static_cast<uint32_t>(values[4]);
+  }
+  if (position_bits >= (1u << kPositionBits)) {
+    FitBelow(0, 3, kPositionBits);
+  }
+  if (tex_coord_bits >= (1u << kTexCoordBits)) {
+    FitBelow(3, 2, kTexCoordBits);
+  }
+}
+
+template <class MeshDataT>
+void GeometricTangentPredictor<MeshDataT>::FitBelow(int first,
+                                                    int num_components,
+                                                    int bits) {
+  int64_t min = INT32_MAX, max = INT32_MIN;
+  for (size_t p = 0; p < num_points_; ++p) {
+    for (int c = first; c < first + num_components; ++c) {
+      min = std::min<int64_t>(min, point_values_[p][c]);
+      max = std::max<int64_t>(max, point_values_[p][c]);
     }
-    for (int k = 0; k < 3; ++k) {
-      const int vertex = table->Vertex(CornerIndex(3 * f + k)).value();
-      if (vertex < 0 || vertex >= static_cast<int>(vertex_to_data.size())) {
-        continue;
-      }
-      const int entry = vertex_to_data[vertex];
-      if (entry < 0 || entry >= num_entries ||
-          sums_[entry].num_faces >= kMaxCornersPerEntry) {
-        continue;
-      }
-      Sums &sums = sums_[entry];
-      const int64_t weight = face.weight[k];
-      for (int i = 0; i < 3; ++i) {
-        sums.direction[i] += weight * face.direction[i];
-      }
-      if (kind_ == GeometricTangentKind::kFace) {
-        for (int i = 0; i < 3; ++i) {
-          sums.normal[i] += weight * face.normal[i];
-        }
-      }
-      sums.orientation += weight * face.orientation;
-      ++sums.num_faces;
-      sums.last_face = f;
+  }
+  const int shift =
+      std::max(0, BitLength(static_cast<uint64_t>(max - min)) - bits);
+  for (size_t p = 0; p < num_points_; ++p) {
+    for (int c = first; c < first + num_components; ++c) {
+      point_values_[p][c] = static_cast<int32_t>(
+          static_cast<uint64_t>(point_values_[p][c] - min) >> shift);
     }
   }
 }
 
-// MikkTSpace's per-triangle tangent (InitTriInfo(): vOs and the UV
-// orientation flag) and its corner angles (EvalTspace()); false for a
-// triangle without a UV gradient.
 template <class MeshDataT>
-bool GeometricTangentPredictor<MeshDataT>::ComputeFace(const Mesh &mesh,
-                                                       FaceIndex face,
-                                                       Face *result) const {
-  TangentVec3 p[3];
-  int64_t uv[3][2];
-  for (int k = 0; k < 3; ++k) {
-    const PointIndex point = mesh.face(face)[k];
-    const auto position = ValueAt<3>(*positions_, point);
-    p[k] = {position[0], position[1], position[2]};
-    const auto tex = ValueAt<2>(*tex_coords_, point);
-    uv[k][0] = tex[0];
-    uv[k][1] = tex[1];
+void GeometricTangentPredictor<MeshDataT>::MapVertices(
+    const MeshDataT &mesh_data) {
+  const std::vector<int32_t> &vertex_to_data = *mesh_data.vertex_to_data_map();
+  const uint32_t num_entries = static_cast<uint32_t>(sums_.size()) - 1;
+  vertex_entry_.resize(mesh_data.corner_table()->num_vertices());
+  for (size_t v = 0; v < vertex_entry_.size(); ++v) {
+    const uint32_t entry = v < vertex_to_data.size()
+                               ? static_cast<uint32_t>(vertex_to_data[v])
+                               : num_entries;
+    vertex_entry_[v] = entry < num_entries ? entry : num_entries;
   }
-  TangentVec3 e1 = Subtract(p[1], p[0]);
-  TangentVec3 e2 = Subtract(p[2], p[0]);
-  const int edge_shift = ShiftBelow(MaxAbsBits(e1) | MaxAbsBits(e2), 30);
-  e1 = ShiftRight(e1, edge_shift);
-  e2 = ShiftRight(e2, edge_shift);
-  TangentVec3 d1 = {uv[1][0] - uv[0][0], uv[1][1] - uv[0][1], 0};
-  TangentVec3 d2 = {uv[2][0] - uv[0][0], uv[2][1] - uv[0][1], 0};
-  const int uv_shift = ShiftBelow(MaxAbsBits(d1) | MaxAbsBits(d2), 30);
-  d1 = ShiftRight(d1, uv_shift);
-  d2 = ShiftRight(d2, uv_shift);
-  const int64_t twice_uv_area = d1[0] * d2[1] - d2[0] * d1[1];
-  if (twice_uv_area == 0) {
-    return false;
-  }
-  TangentVec3 gradient;
-  for (int i = 0; i < 3; ++i) {
-    gradient[i] = d2[1] * e1[i] - d1[1] * e2[i];
-  }
-  const TangentVec3 normal = Cross(e1, e2);
-  if (normal == TangentVec3{0, 0, 0} ||
-      !NormalizeToUnit(gradient, &result->direction)) {
-    return false;
-  }
-  result->orientation = twice_uv_area > 0 ? 1 : -1;
-  if (twice_uv_area < 0) {
-    for (int64_t &c : result->direction) {
-      c = -c;
+}
+
+// Per triangle: MikkTSpace's tangent (InitTriInfo(): vOs with the sign of
+// the UV orientation), normalised, and its corner angles (EvalTspace()),
+// added to the entries of its corners. Positions below 2^15 and texture
+// coordinates below 2^14 bound the gradient below 2^30 and the normal
+// below 2^31.
+template <class MeshDataT>
+template <GeometricTangentKind kind, bool count>
+void GeometricTangentPredictor<MeshDataT>::SumFaces(
+    const MeshDataT &mesh_data) {
+  const Mesh &mesh = *mesh_data.mesh();
+  const auto &table = *mesh_data.corner_table();
+  const uint32_t *const vertex_entry = vertex_entry_.data();
+  const uint32_t num_vertices = static_cast<uint32_t>(vertex_entry_.size());
+  Sums *const all_sums = sums_.data();
+  const int num_faces = table.num_faces();
+  for (int f = 0; f < num_faces; ++f) {
+    const Mesh::Face &points = mesh.face(FaceIndex(f));
+    const PointValues &p0 = point_values_[points[0].value()];
+    const PointValues &p1 = point_values_[points[1].value()];
+    const PointValues &p2 = point_values_[points[2].value()];
+    const int64_t du1 = int64_t{p1[3]} - p0[3];
+    int64_t dv1 = int64_t{p1[4]} - p0[4];
+    const int64_t du2 = int64_t{p2[3]} - p0[3];
+    int64_t dv2 = int64_t{p2[4]} - p0[4];
+    const int64_t twice_uv_area = du1 * dv2 - du2 * dv1;
+    if (twice_uv_area == 0) {
+      continue;
+    }
+    const int orientation = twice_uv_area > 0 ? 1 : -1;
+    if (orientation < 0) {
+      dv1 = -dv1;
+      dv2 = -dv2;
+    }
+    TangentVec3 e1, e2, gradient;
+    for (int i = 0; i < 3; ++i) {
+      e1[i] = int64_t{p1[i]} - p0[i];
+      e2[i] = int64_t{p2[i]} - p0[i];
+      gradient[i] = dv2 * e1[i] - dv1 * e2[i];
+    }
+    const TangentVec3 normal = Cross(e1, e2);
+    const uint64_t gradient_squared = SquaredLength(gradient);
+    const uint64_t normal_squared = SquaredLength(normal);
+    if (gradient_squared == 0 || normal_squared == 0) {
+      continue;
+    }
+    const TangentVec3 direction = ToUnitLength(gradient, gradient_squared);
+    const std::array<int32_t, 3> weight =
+        kind == GeometricTangentKind::kMikkTSpace
+            ? CornerAngles(e1, e2, IntSqrtFloor(normal_squared))
+            : std::array<int32_t, 3>{1, 1, 1};
+    TangentVec3 unit_normal;
+    if (kind == GeometricTangentKind::kFace) {
+      unit_normal = ToUnitLength(normal, normal_squared);
+    }
+    for (int k = 0; k < 3; ++k) {
+      const uint32_t vertex =
+          table.ConfidentVertex(CornerIndex(3 * f + k)).value();
+      // Entries of no vertex add to the dummy sums past the last entry.
+      const uint32_t entry = vertex < num_vertices
+                                 ? vertex_entry[vertex]
+                                 : static_cast<uint32_t>(sums_.size()) - 1;
+      if (count) {
+        FaceSums &face_sums = face_sums_[entry];
+        if (face_sums.num_faces >= kMaxCornersPerEntry) {
+          continue;
+        }
+        ++face_sums.num_faces;
+        face_sums.last_face = f;
+        if (kind == GeometricTangentKind::kFace) {
+          for (int i = 0; i < 3; ++i) {
+            face_sums.normal[i] += unit_normal[i];
+          }
+        }
+      }
+      Sums &sums = all_sums[entry];
+      const int64_t w = weight[k];
+      for (int i = 0; i < 3; ++i) {
+        sums.direction[i] += w * direction[i];
+      }
+      sums.orientation += w * orientation;
     }
   }
-  if (kind_ == GeometricTangentKind::kMikkTSpace) {
-    result->weight = CornerAngles(e1, e2, normal);
-  } else {
-    result->weight = {1, 1, 1};
-  }
-  if (kind_ == GeometricTangentKind::kFace) {
-    NormalizeToUnit(normal, &result->normal);
-  }
-  return true;
+}
+
+template <class MeshDataT>
+TangentVec3 GeometricTangentPredictor<MeshDataT>::VertexNormal(
+    const MeshDataT &mesh_data, int entry) const {
+  const PointIndex point = mesh_data.mesh()->CornerToPointId(
+      (*mesh_data.data_to_corner_map())[entry]);
+  int32_t octahedral[2];
+  normal_values_.Get(point, octahedral);
+  const TangentVec3 normal =
+      OctahedralToVector(octahedral[0], octahedral[1], normal_bits_);
+  return normal_bits_ <= kPlaneNormalBits
+             ? normal
+             : ShiftRight(normal, normal_bits_ - kPlaneNormalBits);
 }
 
 // MikkTSpace's EvalTspace(): the weighted sum of the triangles' gradients
-// around the vertex, projected onto the normal plane and normalised.
+// around the vertex, projected onto the normal plane.
 template <class MeshDataT>
 GeometricTangentPrediction GeometricTangentPredictor<MeshDataT>::Predict(
     const MeshDataT &mesh_data, int entry) const {
   GeometricTangentPrediction prediction;
   const Sums &sums = sums_[entry];
-  if (sums.num_faces == 0) {
-    return prediction;
-  }
   prediction.handedness = sums.orientation >= 0 ? 1 : -1;
+  // 30 bits: the projection's products fit, and its rounding (a 2^-8 of
+  // the normal) stays far below the grid's steps.
+  const TangentVec3 direction = ScaleToBits(sums.direction, 30);
   TangentVec3 plane_normal;
   if (kind_ == GeometricTangentKind::kFace) {
-    if (!NormalizeToUnit(sums.direction, &prediction.tangent) ||
-        !NormalizeToUnit(sums.normal, &plane_normal)) {
-      return prediction;
+    const FaceSums &face_sums = face_sums_[entry];
+    if (face_sums.num_faces == 1) {
+      prediction.single_face = face_sums.last_face;
     }
-    if (sums.num_faces == 1) {
-      prediction.single_face = sums.last_face;
-    }
+    prediction.tangent = direction;
+    plane_normal = ShiftRight(
+        face_sums.normal,
+        ShiftBelow(MaxAbsBits(face_sums.normal), kPlaneNormalBits));
   } else {
-    const PointIndex point = mesh_data.mesh()->CornerToPointId(
-        mesh_data.data_to_corner_map()->at(entry));
-    const auto octahedral = ValueAt<2>(*normals_, point);
-    plane_normal =
-        OctahedralToVector(static_cast<int32_t>(octahedral[0]),
-                           static_cast<int32_t>(octahedral[1]), normal_bits_);
-    if (!NormalizeToUnit(ProjectOntoPlane(sums.direction, plane_normal),
-                         &prediction.tangent)) {
-      return prediction;
-    }
-    plane_normal = ShiftRight(plane_normal,
-                              ShiftBelow(MaxAbsBits(plane_normal), 24));
+    plane_normal = VertexNormal(mesh_data, entry);
+    prediction.tangent = ProjectOntoPlane(direction, plane_normal);
   }
+  const uint64_t squared = SquaredLength(prediction.tangent);
+  if (squared == 0) {
+    return prediction;
+  }
+  prediction.length = static_cast<int64_t>(IntSqrtFloor(squared));
   // The bitangent only serves its direction (the axis order and a ratio).
   prediction.bitangent = Cross(plane_normal, prediction.tangent);
   prediction.valid = true;

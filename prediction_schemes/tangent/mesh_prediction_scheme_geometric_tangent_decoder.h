@@ -56,10 +56,18 @@ class MeshPredictionSchemeGeometricTangentDecoder
 
   bool DecodePredictionData(DecoderBuffer *buffer) override {
     uint8_t version;
+    uint32_t num_tokens;
     if (!DecodeUvBitstreamGuard(buffer) || !buffer->Decode(&version) ||
         version != kGeometricTangentFormatVersion ||
         !config_.Decode(buffer) ||
-        !residuals_.Decode(NumEntries() * kTangentNumComponents, buffer)) {
+        (config_.handedness_exceptions &&
+         !handedness_exceptions_.Decode(true, NumEntries(), buffer)) ||
+        (config_.copy_exceptions &&
+         !copy_exceptions_.Decode(false, NumEntries(), buffer)) ||
+        !DecodeVarint(&num_tokens, buffer) ||
+        num_tokens > static_cast<uint32_t>(NumEntries()) *
+                         kTangentNumComponents ||
+        !residuals_.Decode(static_cast<int>(num_tokens), buffer)) {
       return false;
     }
     return MeshPredictionSchemeDecoder<DataTypeT, TransformT,
@@ -69,6 +77,8 @@ class MeshPredictionSchemeGeometricTangentDecoder
   PredictionSchemeMethod GetPredictionMethod() const override {
     return MESH_PREDICTION_GEOMETRIC_TANGENT;
   }
+  // Draco's corrections are all zero (see the encoder): no sign to undo.
+  bool AreCorrectionsPositive() override { return true; }
   bool IsInitialized() const override {
     return predictor_.IsInitialized() && this->mesh_data().IsInitialized();
   }
@@ -85,30 +95,57 @@ class MeshPredictionSchemeGeometricTangentDecoder
  private:
   class Coder {
    public:
-    Coder(UvResidualDecoder *residuals, int32_t max_value)
-        : residuals_(residuals), max_value_(max_value) {}
+    Coder(UvResidualDecoder *residuals, const GeometricTangentConfig &config,
+          TangentExceptions *handedness_exceptions,
+          TangentExceptions *copy_exceptions)
+        : residuals_(residuals),
+          max_value_(config.coding.grid.max_value),
+          handedness_exceptions_(config.handedness_exceptions
+                                     ? handedness_exceptions
+                                     : nullptr),
+          copy_exceptions_(config.copy_exceptions ? copy_exceptions
+                                                  : nullptr) {}
     bool Value(int context, int32_t predicted, int32_t sign, int32_t *value) {
       int32_t residual;
       if (!residuals_->Next(context, &residual)) {
         return false;
       }
       const int64_t result = int64_t{predicted} + int64_t{sign} * residual;
-      if (result < 0 || result > max_value_) {
+      if (static_cast<uint64_t>(result) > static_cast<uint64_t>(max_value_)) {
         return false;
       }
       *value = static_cast<int32_t>(result);
       return true;
     }
-    bool Handedness(int context, const std::array<int32_t, 2> &predicted,
+    bool Handedness(int entry, const std::array<int32_t, 2> &predicted,
                     int32_t *w) {
-      int32_t symbol;
-      return residuals_->Next(context, &symbol) &&
-             HandednessFromSymbol(symbol, predicted, max_value_, w);
+      int32_t symbol = 0;
+      if (handedness_exceptions_ != nullptr) {
+        handedness_exceptions_->Take(entry, &symbol);
+      } else if (!residuals_->Next(kTangentHandednessContext, &symbol)) {
+        return false;
+      }
+      return HandednessFromSymbol(symbol, predicted, max_value_, w);
+    }
+    bool Copy(int entry, const int32_t *source, int32_t *v) {
+      int32_t unused;
+      if (copy_exceptions_ != nullptr && !copy_exceptions_->Take(entry, &unused)) {
+        std::copy(source, source + kTangentNumComponents, v);
+        return true;
+      }
+      for (int c = 0; c < kTangentNumComponents; ++c) {
+        if (!Value(kTangentCopyContext, source[c], 1, &v[c])) {
+          return false;
+        }
+      }
+      return true;
     }
 
    private:
     UvResidualDecoder *residuals_;
     int32_t max_value_;
+    TangentExceptions *handedness_exceptions_;
+    TangentExceptions *copy_exceptions_;
   };
 
   int NumEntries() const {
@@ -118,6 +155,8 @@ class MeshPredictionSchemeGeometricTangentDecoder
   GeometricTangentPredictor<MeshDataT> predictor_;
   UvResidualDecoder residuals_{kTangentNumContexts};
   GeometricTangentConfig config_;
+  TangentExceptions handedness_exceptions_;
+  TangentExceptions copy_exceptions_;
 };
 
 template <typename DataTypeT, class TransformT, class MeshDataT>
@@ -127,14 +166,22 @@ bool MeshPredictionSchemeGeometricTangentDecoder<DataTypeT, TransformT,
                           int size, int num_components,
                           const PointIndex * /* entry_to_point_id_map */) {
   if (num_components != kTangentNumComponents ||
-      size != NumEntries() * kTangentNumComponents ||
-      std::any_of(in_corr, in_corr + size,
-                  [](CorrType c) { return c != CorrType(0); })) {
+      size != NumEntries() * kTangentNumComponents) {
+    return false;
+  }
+  // Every correction must be zero: OR them all (a loop compilers
+  // vectorise, unlike a search that stops early).
+  CorrType any = 0;
+  for (int i = 0; i < size; ++i) {
+    any |= in_corr[i];
+  }
+  if (any != 0) {
     return false;
   }
   predictor_.ComputeSums(this->mesh_data(), config_.kind,
                          config_.normal_bits);
-  Coder coder(&residuals_, config_.coding.grid.max_value);
+  Coder coder(&residuals_, config_, &handedness_exceptions_,
+              &copy_exceptions_);
   return CodeGeometricTangents(
       this->mesh_data(), config_.coding,
       [&](int entry) { return predictor_.Predict(this->mesh_data(), entry); },

@@ -50,7 +50,9 @@ struct GeometricTangentEncoderSettings {
 // UvResidualEncoder and hands Draco all-zero corrections.
 // Prediction data, before the base class's transform data: the 8-byte
 // bitstream guard (uv_bitstream_guard.h), the format version,
-// GeometricTangentConfig and the residual streams.
+// GeometricTangentConfig, the TangentExceptions its flags ask for (the
+// handedness's, then the copies'), the number of tokens (varint) and their
+// residual streams.
 // Needs integer positions, octahedral normals and integer texture
 // coordinates as parents, and quantised tangents within the grid of
 // |settings| (at most 21 bits); ComputeCorrectionValues() fails otherwise.
@@ -87,6 +89,9 @@ class MeshPredictionSchemeGeometricTangentEncoder
   PredictionSchemeMethod GetPredictionMethod() const override {
     return MESH_PREDICTION_GEOMETRIC_TANGENT;
   }
+  // The corrections are all zero: Draco need not zig-zag them (nor the
+  // decoder undo it).
+  bool AreCorrectionsPositive() override { return true; }
   bool IsInitialized() const override {
     return predictor_.IsInitialized() && this->mesh_data().IsInitialized();
   }
@@ -103,20 +108,51 @@ class MeshPredictionSchemeGeometricTangentEncoder
  private:
   class Coder {
    public:
-    explicit Coder(UvResidualEncoder *residuals) : residuals_(residuals) {}
+    Coder(UvResidualEncoder *residuals, const GeometricTangentConfig &config,
+          TangentExceptions *handedness_exceptions,
+          TangentExceptions *copy_exceptions)
+        : residuals_(residuals),
+          handedness_exceptions_(config.handedness_exceptions
+                                     ? handedness_exceptions
+                                     : nullptr),
+          copy_exceptions_(config.copy_exceptions ? copy_exceptions
+                                                  : nullptr) {}
     bool Value(int context, int32_t predicted, int32_t sign,
                const int32_t *value) {
       residuals_->Add(context, sign * (*value - predicted));
+      ++num_tokens_;
       return true;
     }
-    bool Handedness(int context, const std::array<int32_t, 2> &predicted,
+    bool Handedness(int entry, const std::array<int32_t, 2> &predicted,
                     const int32_t *w) {
-      residuals_->Add(context, HandednessSymbol(*w, predicted));
+      const int32_t symbol = HandednessSymbol(*w, predicted);
+      if (handedness_exceptions_ == nullptr) {
+        residuals_->Add(kTangentHandednessContext, symbol);
+        ++num_tokens_;
+      } else if (symbol != 0) {
+        handedness_exceptions_->Add(entry, symbol);
+      }
       return true;
     }
+    bool Copy(int entry, const int32_t *source, const int32_t *v) {
+      if (copy_exceptions_ != nullptr) {
+        if (std::equal(v, v + kTangentNumComponents, source)) {
+          return true;
+        }
+        copy_exceptions_->Add(entry, 1);
+      }
+      for (int c = 0; c < kTangentNumComponents; ++c) {
+        Value(kTangentCopyContext, source[c], 1, &v[c]);
+      }
+      return true;
+    }
+    uint32_t num_tokens() const { return num_tokens_; }
 
    private:
     UvResidualEncoder *residuals_;
+    TangentExceptions *handedness_exceptions_;
+    TangentExceptions *copy_exceptions_;
+    uint32_t num_tokens_ = 0;
   };
 
   // The handedness sign and step-2 gain that suit |predictions| of |values|.
@@ -208,8 +244,8 @@ MeshPredictionSchemeGeometricTangentEncoder<DataTypeT, TransformT, MeshDataT>::
     const int b1 = components.Axis(0);
     // In units of 2^-8 of a step, capped at 256 steps.
     const int64_t moved = std::clamp<int64_t>(
-        RoundedShift((int64_t{v[b1]} << TangentGrid::kFractionBits) -
-                         params.grid.Coordinate(b1, prediction.tangent[b1]),
+        RoundedShiftHalfUp((int64_t{v[b1]} << TangentGrid::kFractionBits) -
+                         components.Coordinate(b1),
                      8),
         -(1 << 16), 1 << 16);
     sum_squares += static_cast<uint64_t>(moved * moved);
@@ -259,12 +295,13 @@ bool MeshPredictionSchemeGeometricTangentEncoder<DataTypeT, TransformT,
   const auto predict = [&](int entry) { return predictions[entry]; };
   std::vector<int32_t> copy(values, values + predictions.size() *
                                                  kTangentNumComponents);
+  TangentExceptions handedness_exceptions, copy_exceptions;
   // A first pass for the neighbour sums, whose terciles become the
   // thresholds of the neighbour classes.
   GeometricTangentConfig tuned = config;
   {
     UvResidualEncoder residuals(kTangentNumContexts);
-    Coder coder(&residuals);
+    Coder coder(&residuals, config, &handedness_exceptions, &copy_exceptions);
     std::vector<int8_t> sums(predictions.size(), -1);
     if (!CodeGeometricTangents(this->mesh_data(), config.coding, predict,
                                &coder, copy.data(), &sums)) {
@@ -272,21 +309,37 @@ bool MeshPredictionSchemeGeometricTangentEncoder<DataTypeT, TransformT,
     }
     tuned.coding.neighbour_thresholds = NeighbourThresholds(sums);
   }
-  UvResidualEncoder residuals(kTangentNumContexts);
-  residuals.Reset(static_cast<int>(predictions.size()) * kTangentNumComponents);
-  Coder coder(&residuals);
-  if (!CodeGeometricTangents(this->mesh_data(), tuned.coding, predict, &coder,
-                             copy.data())) {
-    return false;
-  }
-  EncoderBuffer streams;
-  if (!residuals.Encode(&streams)) {
-    return false;
-  }
-  if (!has_best_ || streams.size() < best_streams_.size()) {
-    best_streams_.assign(streams.data(), streams.data() + streams.size());
-    best_config_ = tuned;
-    has_best_ = true;
+  // Then the handedness and the copies as tokens or as exceptions,
+  // whichever is smaller.
+  for (int exceptions = 0; exceptions < 4; ++exceptions) {
+    tuned.handedness_exceptions = (exceptions & 1) != 0;
+    tuned.copy_exceptions = (exceptions & 2) != 0;
+    handedness_exceptions.Clear();
+    copy_exceptions.Clear();
+    UvResidualEncoder residuals(kTangentNumContexts);
+    residuals.Reset(static_cast<int>(predictions.size()) *
+                    kTangentNumComponents);
+    Coder coder(&residuals, tuned, &handedness_exceptions, &copy_exceptions);
+    if (!CodeGeometricTangents(this->mesh_data(), tuned.coding, predict,
+                               &coder, copy.data())) {
+      return false;
+    }
+    EncoderBuffer streams;
+    if (tuned.handedness_exceptions) {
+      handedness_exceptions.Encode(true, &streams);
+    }
+    if (tuned.copy_exceptions) {
+      copy_exceptions.Encode(false, &streams);
+    }
+    EncodeVarint<uint32_t>(coder.num_tokens(), &streams);
+    if (!residuals.Encode(&streams)) {
+      return false;
+    }
+    if (!has_best_ || streams.size() < best_streams_.size()) {
+      best_streams_.assign(streams.data(), streams.data() + streams.size());
+      best_config_ = tuned;
+      has_best_ = true;
+    }
   }
   return true;
 }

@@ -15,10 +15,10 @@
 // Fixed-point 3D vectors for the geometric tangent prediction: unit vectors
 // with kTangentUnitBits fractional bits, Draco's octahedral normal decoding
 // in integers, and corner angles. Integer operations only (fixed_point.h),
-// so every compiler, CPU and WebAssembly computes the same bits; every
-// function takes any int64 input whose components stay below 2^62 in
-// magnitude and shifts it down before multiplying, so hostile data only
-// weakens a prediction.
+// so every compiler, CPU and WebAssembly computes the same bits. Each
+// function states the magnitudes it takes; the predictor brings its inputs
+// there (once per mesh for the parents' values, per entry for the sums),
+// so hostile data only weakens a prediction.
 //
 // Based on:
 //   [Mikkelsen 2008] M. Mikkelsen: Simulation of wrinkled surfaces
@@ -70,13 +70,13 @@ inline TangentVec3 Subtract(const TangentVec3 &a, const TangentVec3 &b) {
   return {a[0] - b[0], a[1] - b[1], a[2] - b[2]};
 }
 
-// For components below 2^30.
+// For products below 2^62.
 inline TangentVec3 Cross(const TangentVec3 &a, const TangentVec3 &b) {
   return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2],
           a[0] * b[1] - a[1] * b[0]};
 }
 
-// For components below 2^30.
+// For products and their sum below 2^63.
 inline int64_t Dot(const TangentVec3 &a, const TangentVec3 &b) {
   return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 }
@@ -93,22 +93,25 @@ inline TangentVec3 ScaleToBits(const TangentVec3 &v, int bits) {
   return {v[0] * factor, v[1] * factor, v[2] * factor};
 }
 
-// The unit vector (kTangentUnit long) along |v|; false for the zero vector.
-// |v| is scaled to 20 bits first, which keeps its direction within 2^-18,
-// so that one division gives all three components.
-inline bool NormalizeToUnit(const TangentVec3 &v, TangentVec3 *unit) {
-  const TangentVec3 w = ScaleToBits(v, 20);
-  const uint64_t squared = static_cast<uint64_t>(Dot(w, w));
-  if (squared == 0) {
-    return false;
-  }
-  // |w[i]| <= length, so |w[i]| * reciprocal <= 2^62.
+// |v|'s squared length, for components below 2^31 (so below 3 * 2^62).
+inline uint64_t SquaredLength(const TangentVec3 &v) {
+  return static_cast<uint64_t>(v[0] * v[0]) +
+         static_cast<uint64_t>(v[1] * v[1]) +
+         static_cast<uint64_t>(v[2] * v[2]);
+}
+
+// |v| scaled to kTangentUnit length (rounded), given its squared length
+// |squared| > 0; components below 2^31. The length's rounding makes the
+// result up to 1 / floor(|v|) too long; the direction is exact within
+// 2^-24.
+inline TangentVec3 ToUnitLength(const TangentVec3 &v, uint64_t squared) {
+  // At least 1 and at least every |v[i]|, so |v[i]| * reciprocal <= 2^61.
   const int64_t length = static_cast<int64_t>(IntSqrtFloor(squared));
-  const int64_t reciprocal = (int64_t{1} << 62) / length;
-  for (int i = 0; i < 3; ++i) {
-    (*unit)[i] = RoundedShift(w[i] * reciprocal, 62 - kTangentUnitBits);
-  }
-  return true;
+  const int64_t reciprocal = (int64_t{1} << 61) / length;
+  constexpr int kShift = 61 - kTangentUnitBits;
+  return {RoundedShiftHalfUp(v[0] * reciprocal, kShift),
+          RoundedShiftHalfUp(v[1] * reciprocal, kShift),
+          RoundedShiftHalfUp(v[2] * reciprocal, kShift)};
 }
 
 // The normal that Draco's octahedral coordinates (|s|, |t|) with
@@ -132,17 +135,19 @@ inline TangentVec3 OctahedralToVector(int32_t s, int32_t t,
   return {x, y, z};
 }
 
-// |v| projected onto the plane of normal |n| and scaled by |n|^2:
-// v |n|^2 - (v . n) n, exact for components of |v| below 2^30 and of |n|
-// below 2^15 (shifted there first).
+// |v| projected onto the plane of normal |n|: v - c n with c = (v . n) /
+// |n|^2 in units of 2^-8, for components of |v| below 2^30 and of |n| below
+// 2^12; the result's components stay below 2^31 and within |n| / 2^8 of
+// the exact projection. |v| itself where |n| is zero.
 inline TangentVec3 ProjectOntoPlane(const TangentVec3 &v,
                                     const TangentVec3 &n) {
-  const TangentVec3 a = ShiftRight(v, ShiftBelow(MaxAbsBits(v), 30));
-  const TangentVec3 m = ShiftRight(n, ShiftBelow(MaxAbsBits(n), 15));
-  const int64_t along = Dot(a, m);  // Below 3 * 2^45.
-  const int64_t squared = Dot(m, m);  // Below 3 * 2^30.
-  return {a[0] * squared - along * m[0], a[1] * squared - along * m[1],
-          a[2] * squared - along * m[2]};
+  const int64_t squared = Dot(n, n);  // Below 3 * 2^24.
+  if (squared == 0) {
+    return v;
+  }
+  const int64_t along = Dot(v, n) * 256 / squared;  // Below 2^31 * 2^8.
+  return {v[0] - along * n[0] / 256, v[1] - along * n[1] / 256,
+          v[2] - along * n[2] / 256};
 }
 
 // A corner's angle from |y| >= 0, the length of the cross product of its
@@ -161,35 +166,15 @@ inline int32_t DiamondAngle(uint64_t y, int64_t x) {
 }
 
 // The corner angles (DiamondAngle()) of the triangle with edges |e1| =
-// p1 - p0 and |e2| = p2 - p0 (components below 2^30) and normal |normal| =
-// e1 x e2; zeros for a triangle without area.
+// p1 - p0 and |e2| = p2 - p0, components below 2^15, and |twice_area| > 0,
+// the length of e1 x e2 (rounded down).
 inline std::array<int32_t, 3> CornerAngles(const TangentVec3 &e1,
                                            const TangentVec3 &e2,
-                                           const TangentVec3 &normal) {
+                                           uint64_t twice_area) {
   const TangentVec3 e3 = Subtract(e2, e1);
-  // The dot products (below 3 * 2^62) and the normal, scaled together so
-  // that the larger has 30 bits: precise for small triangles, and the
-  // normal's length and the dots below 2^32.
-  const TangentVec3 dots = {Dot(e1, e2), -Dot(e1, e3), Dot(e2, e3)};
-  const int length = BitLength(MaxAbsBits(dots) | MaxAbsBits(normal));
-  const int shift = length - 30;
-  TangentVec3 n = normal, x = dots;
-  if (shift > 0) {
-    n = ShiftRight(normal, shift);
-    x = ShiftRight(dots, shift);
-  } else if (shift < 0) {
-    const int64_t factor = int64_t{1} << -shift;
-    for (int i = 0; i < 3; ++i) {
-      n[i] = normal[i] * factor;
-      x[i] = dots[i] * factor;
-    }
-  }
-  const uint64_t twice_area = IntSqrtFloor(static_cast<uint64_t>(Dot(n, n)));
-  if (twice_area == 0) {
-    return {0, 0, 0};
-  }
-  return {DiamondAngle(twice_area, x[0]), DiamondAngle(twice_area, x[1]),
-          DiamondAngle(twice_area, x[2])};
+  return {DiamondAngle(twice_area, Dot(e1, e2)),
+          DiamondAngle(twice_area, -Dot(e1, e3)),
+          DiamondAngle(twice_area, Dot(e2, e3))};
 }
 
 }  // namespace draco
