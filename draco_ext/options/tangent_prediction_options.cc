@@ -14,6 +14,7 @@
 //
 #include "draco_ext/options/tangent_prediction_options.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "draco/core/encoder_buffer.h"
@@ -156,10 +157,18 @@ bool HasTangentValues(const PointAttribute &att) {
       att.size() == 0) {
     return false;
   }
-  size_t off_unit = 0;
+  // Values with a NaN or an infinity say nothing either way: tangents with
+  // a few of them are still tangents (which ConfigureTangentPrediction()
+  // then refuses with a message, rather than leaving them to Draco's
+  // quantization as GENERIC values).
+  size_t off_unit = 0, finite = 0;
   for (AttributeValueIndex i(0); i < static_cast<uint32_t>(att.size()); ++i) {
     float v[4];
     att.GetValue(i, v);
+    if (!std::all_of(v, v + 4, [](float x) { return std::isfinite(x); })) {
+      continue;
+    }
+    ++finite;
     if (v[3] != 1.f && v[3] != -1.f) {
       return false;
     }
@@ -168,7 +177,7 @@ bool HasTangentValues(const PointAttribute &att) {
                   double{v[2]} * v[2]);
     off_unit += !(std::fabs(length - 1) <= 0.01);
   }
-  return off_unit * 100 <= att.size();
+  return finite > 0 && off_unit * 100 <= finite;
 }
 
 std::vector<int> TangentAttributeIds(const Mesh &mesh) {
@@ -218,6 +227,22 @@ std::string WhyNoGeometricTangentPrediction(const Mesh &mesh,
   return HasFiniteValues(att) ? "" : "NaN or infinite values";
 }
 
+Status CheckTangentValues(const TangentCompressionOptions &options,
+                          const Mesh *mesh) {
+  if (options.IsStock() || mesh == nullptr) {
+    return OkStatus();
+  }
+  for (const int att_id : TangentAttributeIds(*mesh)) {
+    if (!HasFiniteValues(*mesh->attribute(att_id))) {
+      // Draco's quantization cannot cope either (it throws or writes
+      // arbitrary integers).
+      return ErrorStatus(TangentLabel(*mesh, att_id) +
+                         " has NaN or infinite values.");
+    }
+  }
+  return OkStatus();
+}
+
 StatusOr<std::string> ConfigureTangentPrediction(
     const TangentCompressionOptions &options, const Mesh *mesh,
     ExpertEncoder *encoder) {
@@ -228,14 +253,9 @@ StatusOr<std::string> ConfigureTangentPrediction(
   if (mesh == nullptr) {
     return ErrorStatus("-tangent_pred applies to meshes, not to point clouds.");
   }
+  DRACO_RETURN_IF_ERROR(CheckTangentValues(options, mesh));
   std::string summary;
   for (const int att_id : TangentAttributeIds(*mesh)) {
-    if (!HasFiniteValues(*mesh->attribute(att_id))) {
-      // Draco's quantization cannot cope either (it throws or writes
-      // arbitrary integers).
-      return ErrorStatus(TangentLabel(*mesh, att_id) +
-                         " has NaN or infinite values.");
-    }
     if (options.quantization_bits.has_value()) {
       encoder->SetAttributeQuantization(att_id, *options.quantization_bits);
     } else if (!IsQuantized(*encoder, att_id)) {

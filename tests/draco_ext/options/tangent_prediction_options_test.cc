@@ -174,20 +174,32 @@ TEST(TangentPredictionOptionsTest, KeepsStockCodingWhereInputsAreNotExact) {
   }
 }
 
-// Draco cannot quantize them either: a clear error, not a crash.
+// Draco cannot quantize them either: a clear error, not a crash; also as
+// GENERIC, where the other values still make them tangents, and before
+// -uv_pred auto's trial encodes (stock Draco takes minutes over an infinite
+// GENERIC value, then throws std::bad_alloc).
 TEST(TangentPredictionOptionsTest, NonFiniteTangentsAreAnError) {
-  Mesh mesh;
-  mesh.Copy(*Spot());
-  const float inf[4] = {std::numeric_limits<float>::infinity(), 0, 0, 1};
-  mesh.attribute(TangentId(mesh))->SetAttributeValue(AttributeValueIndex(5),
-                                                     inf);
-  EncoderBuffer buffer;
-  const Status status =
-      EncodeMeshWithSettings(mesh, TangentSettings("auto"), &buffer);
-  EXPECT_FALSE(status.ok());
-  EXPECT_NE(std::string(status.error_msg()).find("NaN or infinite"),
-            std::string::npos)
-      << status.error_msg();
+  for (const GeometryAttribute::Type type :
+       {GeometryAttribute::TANGENT, GeometryAttribute::GENERIC}) {
+    for (const float bad : {std::numeric_limits<float>::infinity(),
+                            std::numeric_limits<float>::quiet_NaN()}) {
+      Mesh mesh;
+      mesh.Copy(*Spot());
+      const int id = TangentId(mesh);
+      const float value[4] = {bad, 0, 0, 1};
+      mesh.attribute(id)->SetAttributeValue(AttributeValueIndex(5), value);
+      mesh.attribute(id)->set_attribute_type(type);
+      for (const char *uv : {"", "auto"}) {
+        EncoderBuffer buffer;
+        const Status status = EncodeMeshWithSettings(
+            mesh, TangentSettings("auto", 7, uv), &buffer);
+        EXPECT_FALSE(status.ok()) << type << " " << uv;
+        EXPECT_NE(std::string(status.error_msg()).find("NaN or infinite"),
+                  std::string::npos)
+            << status.error_msg();
+      }
+    }
+  }
 }
 
 TEST(TangentPredictionOptionsTest, MeshesWithoutTangentsAreUntouched) {
