@@ -21,6 +21,7 @@
 #include "draco/draco_features.h"
 #include "draco_ext/options/uv_compression_options.h"
 #include "prediction_schemes/tangent/geometric_tangent_settings.h"
+#include "prediction_schemes/tangent/mesh_prediction_scheme_geometric_tangent_encoder.h"
 
 namespace draco {
 
@@ -224,7 +225,18 @@ std::string WhyNoGeometricTangentPrediction(const Mesh &mesh,
            std::to_string(TangentCompressionOptions::kMaxQuantizationBits) +
            " bits";
   }
-  return HasFiniteValues(att) ? "" : "NaN or infinite values";
+  if (!HasFiniteValues(att)) {
+    return "NaN or infinite values";
+  }
+  // The scheme's fixed point holds up to 2^20 quantization steps per unit;
+  // Draco spreads the 2^bits steps over the values' range, which nearly
+  // constant tangents make tiny (the encoder would fail, and the decoder
+  // refuses such a grid).
+  if (!GeometricTangentGrid(att, encoder.options(), att_id).IsValid()) {
+    return "its values span too small a range for " + std::to_string(bits) +
+           " bits (more than 2^20 quantization steps per unit)";
+  }
+  return "";
 }
 
 Status CheckTangentValues(const TangentCompressionOptions &options,

@@ -202,6 +202,39 @@ TEST(TangentPredictionOptionsTest, NonFiniteTangentsAreAnError) {
   }
 }
 
+// Draco spreads the 2^qtg quantization steps over the range of the values;
+// where that range is small (tangents that barely vary; all w = 1 and at
+// -qtg 21 already a range below 2) the grid is finer than the scheme's
+// fixed point (2^20 steps per unit), the encoder used to fail ("Failed to
+// encode point attributes") and the decoder would refuse the grid. Every
+// name keeps stock coding there and says why.
+TEST(TangentPredictionOptionsTest, TooFineAGridKeepsStockCoding) {
+  Mesh narrow;
+  narrow.Copy(*Spot());
+  PointAttribute *const tangents = narrow.attribute(TangentId(narrow));
+  for (AttributeValueIndex i(0); i < tangents->size(); ++i) {
+    // Unit tangents within 0.004 degrees of +x, w = 1.
+    const float a = 1e-5f * static_cast<float>(i.value() % 7);
+    const float value[4] = {std::cos(a), std::sin(a), 0, 1};
+    tangents->SetAttributeValue(i, value);
+  }
+  for (const int bits : {8, 12}) {
+    for (const char *name : {"auto", "mikktspace", "geometric"}) {
+      UvEncodeSettings settings = TangentSettings(name);
+      settings.uv.tangent.quantization_bits = bits;
+      UvEncodeSettings stock_settings = TangentSettings("draco");
+      stock_settings.uv.tangent.quantization_bits = bits;
+      const Encoded ours = Encode(narrow, settings);
+      const Encoded stock = Encode(narrow, stock_settings);
+      EXPECT_NE(ours.summary.find("keeps stock coding: its values span too "
+                                  "small a range"),
+                std::string::npos)
+          << ours.summary;
+      EXPECT_EQ(ours.bytes, stock.bytes) << name << " " << bits;
+    }
+  }
+}
+
 TEST(TangentPredictionOptionsTest, MeshesWithoutTangentsAreUntouched) {
   const auto mesh = ReadTestMesh(UvTestdataPath("crane_spot.obj"));
   ASSERT_TRUE(mesh.ok());
