@@ -10,10 +10,12 @@
 #                                    the build
 #   scripts/fuzz.sh deep RUNS [NAME...]
 #                                    decode:NAME targets (default: every
-#                                    variant) for RUNS executions each,
-#                                    seeded with the small golden meshes only
+#                                    variant, then tangent) for RUNS
+#                                    executions each, seeded with the small
+#                                    golden meshes only
 #                                    (testdata/golden/small_*.NAME.drc and
-#                                    cube_att, tens of vertices), so ASan
+#                                    cube_att, tens of vertices; for tangent
+#                                    every tangent golden file), so ASan
 #                                    runs thousands of decodes a second
 #
 # Targets (tests/fuzz/):
@@ -22,6 +24,12 @@
 #                files testdata/golden/*.NAME.drc (and reading the crash
 #                regressions of testdata/fuzz/decode/), so every scheme and
 #                variant gets its own corpus;
+#   decode:tangent  draco_uv_decode_fuzzer seeded with the golden files of
+#                every row of testdata/golden/tangent_variants.tsv
+#                (testdata/golden/*.tangent_*.drc: the small glTF meshes with
+#                tangents, MESH_PREDICTION_GEOMETRIC_TANGENT with every
+#                convention, and stock coding of the same tangents), one
+#                corpus for the tangent scheme's settings;
 #   decode:laplacian  draco_uv_decode_fuzzer seeded with the lossy
 #                Laplacian schemes' golden files testdata/golden/lossy/
 #                (encoder output only: their decoded floats may differ
@@ -36,7 +44,8 @@
 #
 # Adding a scheme or variant: one line in testdata/golden/variants.tsv, then
 # scripts/make-golden.sh; that makes a new decode target with its seeds (and
-# the malformed-input tests and scripts/check-determinism.sh cover it). New
+# the malformed-input tests and scripts/check-determinism.sh cover it). A
+# line in tangent_variants.tsv adds its files to decode:tangent's seeds. New
 # -uv_pred names reach the round-trip fuzzer by themselves
 # (UvPredictionNames()); a new encoder option such as -uv_seams is one line
 # in draco_uv_roundtrip_fuzzer.cc that sets its UvEncodeSettings field from
@@ -73,6 +82,22 @@ build() {
 # Names from testdata/golden/variants.tsv.
 variant_names() {
   grep -v -e '^#' -e '^$' testdata/golden/variants.tsv | cut -f1
+}
+
+# copy_seeds NAME PATTERN DIR: the golden files of decode:NAME whose mesh
+# matches PATTERN ('*': all; the rows of tangent_variants.tsv for tangent)
+# into DIR; false when there are none.
+copy_seeds() {
+  local files=()
+  rm -rf "$3" && mkdir -p "$3"
+  if [[ $1 == tangent ]]; then
+    # shellcheck disable=SC2206  # the pattern is a glob
+    files=(testdata/golden/$2.tangent_*.drc)
+  else
+    # shellcheck disable=SC2206
+    files=(testdata/golden/$2."$1".drc)
+  fi
+  [[ -e "${files[0]}" ]] && cp "${files[@]}" "$3/"
 }
 
 # stock_oom BINARY FILE: whether the oversized allocation FILE makes (an
@@ -141,11 +166,10 @@ run_all() {
   local seconds=$1 skipped=${2:-} bin="${FUZZ_BUILD_DIR}/tests/fuzz" failures=0 name
   printf '%-34s %6s %12s %8s %8s %6s\n' target seconds executions corpus crashes \
     stock
-  for name in $(variant_names); do
+  for name in $(variant_names) tangent; do
     [[ "${name}" != "${skipped}" ]] || continue
     local seeds="${FUZZ_BUILD_DIR}/seeds/${name}"
-    rm -rf "${seeds}" && mkdir -p "${seeds}"
-    cp testdata/golden/*."${name}".drc "${seeds}/" 2>/dev/null ||
+    copy_seeds "${name}" '*' "${seeds}" ||
       echo "fuzz.sh: no golden files for ${name}; run scripts/make-golden.sh" >&2
     run_target "decode:${name}" "${bin}/draco_uv_decode_fuzzer" "${seconds}" \
       "${seeds}" testdata/fuzz/decode || failures=$((failures + 1))
@@ -163,14 +187,14 @@ run_deep() {
   local runs=$1 bin="${FUZZ_BUILD_DIR}/tests/fuzz" failures=0 name names
   shift
   names=("$@")
-  [[ ${#names[@]} -gt 0 ]] || mapfile -t names < <(variant_names)
+  [[ ${#names[@]} -gt 0 ]] || mapfile -t names < <(variant_names; echo tangent)
   printf '%-34s %6s %12s %8s %8s %6s\n' target seconds executions corpus crashes \
     stock
   for name in "${names[@]}"; do
     local seeds="${FUZZ_BUILD_DIR}/seeds-small/${name}"
-    rm -rf "${seeds}" && mkdir -p "${seeds}"
-    cp testdata/golden/small_*."${name}".drc testdata/golden/cube_att."${name}".drc \
-      "${seeds}/" || die "no small golden files for ${name}; run scripts/make-golden.sh"
+    copy_seeds "${name}" 'small_*' "${seeds}" ||
+      die "no small golden files for ${name}; run scripts/make-golden.sh"
+    [[ ${name} == tangent ]] || cp testdata/golden/cube_att."${name}".drc "${seeds}/"
     RUNS=${runs} run_target "decode:${name}" "${bin}/draco_uv_decode_fuzzer" 86400 \
       "${seeds}" || failures=$((failures + 1))
   done

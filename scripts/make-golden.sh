@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Golden bitstreams: every mesh below encoded with every row of
 # testdata/golden/variants.tsv (NAME<TAB>draco_encoder flags) into
-# testdata/golden/MESH.NAME.drc, and what each decodes to in
-# testdata/golden/expected.tsv (draco_uv_digest: a hash of the quantized
-# values at every corner). The lossy Laplacian coder's rows,
+# testdata/golden/MESH.NAME.drc, every glTF mesh with tangents below with
+# every row of testdata/golden/tangent_variants.tsv likewise, and what each
+# decodes to in testdata/golden/expected.tsv (draco_uv_digest: a hash of
+# the quantized values at every corner, tangents included). The lossy Laplacian coder's rows,
 # testdata/golden/lossy/variants.tsv, pin the encoder's bytes only
 # (testdata/golden/lossy/MESH.NAME.drc): its decoded floats may differ
 # between builds and CPUs.
@@ -19,8 +20,9 @@
 #   scripts/make-golden.sh --check-decode BUILD_DIR    our decoder still reads
 #                                                      exactly these values
 #
-# A new scheme or setting is one line in variants.tsv; run this script and
-# commit the new files. Changing a bitstream on purpose means rewriting the
+# A new scheme or setting is one line in variants.tsv (tangent_variants.tsv
+# for tangent settings, which need glTF input); run this script and commit
+# the new files. Changing a bitstream on purpose means rewriting the
 # goldens in the same commit (and bumping the scheme's format version).
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -43,23 +45,41 @@ meshes=(
   testdata/small_cube_sphere.obj
   "${build_dir}/draco-patched/testdata/cube_att.obj"
 )
+# The small ones as GLBs with MikkTSpace tangents, for tangent_variants.tsv
+# (crane_spot_tangents.glb's files, 16-29 KB, would make the malformed-input
+# tests truncate tens of thousands of times more).
+tangent_meshes=(
+  testdata/small_torus_uv_tangents.glb
+  testdata/small_cube_sphere_tangents.glb
+)
 
 die() { echo "make-golden.sh: $*" >&2; exit 1; }
 for tool in "${encoder}" "${digest}"; do
   [[ -x "${tool}" ]] || die "missing ${tool}; build first (ninja -C ${build_dir})"
 done
 
-# Every (mesh, variant) of DIR/variants.tsv as "MESH.NAME.drc<TAB>mesh
-# path<TAB>flags" (default DIR: the exact schemes' golden_dir).
-golden_list() {  # golden_list [DIR]
-  local mesh name flags
-  for mesh in "${meshes[@]}"; do
+# Every (mesh, row) of TABLE as "MESH.NAME.drc<TAB>mesh path<TAB>flags".
+table_list() {  # table_list TABLE MESH...
+  local table=$1 mesh name flags base
+  shift
+  for mesh in "$@"; do
+    base=$(basename "${mesh}")
     while IFS=$'\t' read -r name flags; do
       [[ -z "${name}" || "${name}" == \#* ]] && continue
-      printf '%s.%s.drc\t%s\t%s\n' "$(basename "${mesh}" .obj)" "${name}" \
-        "${mesh}" "${flags}"
-    done <"${1:-${golden_dir}}/variants.tsv"
+      printf '%s.%s.drc\t%s\t%s\n' "${base%.*}" "${name}" "${mesh}" "${flags}"
+    done <"${table}"
   done
+}
+
+# Every golden file of DIR (default: the exact schemes' golden_dir): the
+# meshes with DIR/variants.tsv, and in golden_dir the tangent meshes with
+# tangent_variants.tsv.
+golden_list() {  # golden_list [DIR]
+  local dir=${1:-${golden_dir}}
+  table_list "${dir}/variants.tsv" "${meshes[@]}"
+  if [[ ${dir} == "${golden_dir}" ]]; then
+    table_list "${golden_dir}/tangent_variants.tsv" "${tangent_meshes[@]}"
+  fi
 }
 
 encode_all() {  # encode_all VARIANTS_DIR OUT_DIR

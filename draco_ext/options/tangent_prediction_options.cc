@@ -14,12 +14,14 @@
 //
 #include "draco_ext/options/tangent_prediction_options.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "draco/core/encoder_buffer.h"
 #include "draco/draco_features.h"
 #include "draco_ext/options/uv_compression_options.h"
 #include "prediction_schemes/tangent/geometric_tangent_settings.h"
+#include "prediction_schemes/tangent/mesh_prediction_scheme_geometric_tangent_encoder.h"
 
 namespace draco {
 
@@ -156,10 +158,18 @@ bool HasTangentValues(const PointAttribute &att) {
       att.size() == 0) {
     return false;
   }
-  size_t off_unit = 0;
+  // Values with a NaN or an infinity say nothing either way: tangents with
+  // a few of them are still tangents (which ConfigureTangentPrediction()
+  // then refuses with a message, rather than leaving them to Draco's
+  // quantization as GENERIC values).
+  size_t off_unit = 0, finite = 0;
   for (AttributeValueIndex i(0); i < static_cast<uint32_t>(att.size()); ++i) {
     float v[4];
     att.GetValue(i, v);
+    if (!std::all_of(v, v + 4, [](float x) { return std::isfinite(x); })) {
+      continue;
+    }
+    ++finite;
     if (v[3] != 1.f && v[3] != -1.f) {
       return false;
     }
@@ -168,7 +178,7 @@ bool HasTangentValues(const PointAttribute &att) {
                   double{v[2]} * v[2]);
     off_unit += !(std::fabs(length - 1) <= 0.01);
   }
-  return off_unit * 100 <= att.size();
+  return finite > 0 && off_unit * 100 <= finite;
 }
 
 std::vector<int> TangentAttributeIds(const Mesh &mesh) {
@@ -215,7 +225,34 @@ std::string WhyNoGeometricTangentPrediction(const Mesh &mesh,
            std::to_string(TangentCompressionOptions::kMaxQuantizationBits) +
            " bits";
   }
-  return HasFiniteValues(att) ? "" : "NaN or infinite values";
+  if (!HasFiniteValues(att)) {
+    return "NaN or infinite values";
+  }
+  // The scheme's fixed point holds up to 2^20 quantization steps per unit;
+  // Draco spreads the 2^bits steps over the values' range, which nearly
+  // constant tangents make tiny (the encoder would fail, and the decoder
+  // refuses such a grid).
+  if (!GeometricTangentGrid(att, encoder.options(), att_id).IsValid()) {
+    return "its values span too small a range for " + std::to_string(bits) +
+           " bits (more than 2^20 quantization steps per unit)";
+  }
+  return "";
+}
+
+Status CheckTangentValues(const TangentCompressionOptions &options,
+                          const Mesh *mesh) {
+  if (options.IsStock() || mesh == nullptr) {
+    return OkStatus();
+  }
+  for (const int att_id : TangentAttributeIds(*mesh)) {
+    if (!HasFiniteValues(*mesh->attribute(att_id))) {
+      // Draco's quantization cannot cope either (it throws or writes
+      // arbitrary integers).
+      return ErrorStatus(TangentLabel(*mesh, att_id) +
+                         " has NaN or infinite values.");
+    }
+  }
+  return OkStatus();
 }
 
 StatusOr<std::string> ConfigureTangentPrediction(
@@ -228,14 +265,9 @@ StatusOr<std::string> ConfigureTangentPrediction(
   if (mesh == nullptr) {
     return ErrorStatus("-tangent_pred applies to meshes, not to point clouds.");
   }
+  DRACO_RETURN_IF_ERROR(CheckTangentValues(options, mesh));
   std::string summary;
   for (const int att_id : TangentAttributeIds(*mesh)) {
-    if (!HasFiniteValues(*mesh->attribute(att_id))) {
-      // Draco's quantization cannot cope either (it throws or writes
-      // arbitrary integers).
-      return ErrorStatus(TangentLabel(*mesh, att_id) +
-                         " has NaN or infinite values.");
-    }
     if (options.quantization_bits.has_value()) {
       encoder->SetAttributeQuantization(att_id, *options.quantization_bits);
     } else if (!IsQuantized(*encoder, att_id)) {

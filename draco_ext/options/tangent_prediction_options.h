@@ -32,7 +32,8 @@ namespace draco {
 
 // True when |att| holds tangents by its values: 4 float components, w = +1
 // or -1 everywhere, xyz of length 1 (within 1 %) for all but 1 % of the
-// values. How the JavaScript encoder recognises the TANGENT that
+// values; values with a NaN or an infinity are not counted (but some must
+// be finite). How the JavaScript encoder recognises the TANGENT that
 // glTF-Transform and gltf-pipeline hand Draco as a GENERIC attribute.
 bool HasTangentValues(const PointAttribute &att);
 
@@ -45,10 +46,19 @@ std::vector<int> TangentAttributeIds(const Mesh &mesh);
 // Edgebreaker with an attribute connectivity of its own (-cl 5 to 10),
 // quantized positions, a NORMAL attribute with quantized (octahedral)
 // normals, a first TEX_COORD attribute coded losslessly on its quantization
-// grid, quantized tangents of at most 21 bits, finite values.
+// grid, quantized tangents of at most 21 bits, finite values, and a
+// quantization grid of at most 2^20 steps per unit (GeometricTangentGrid()).
 std::string WhyNoGeometricTangentPrediction(const Mesh &mesh,
                                             const ExpertEncoder &encoder,
                                             int att_id);
+
+// Fails with a message when |options| apply to tangents (anything but
+// stock coding without -qtg) and a tangent attribute of |mesh| has NaN or
+// infinite values, which Draco's quantization cannot code. The UV options'
+// trial encodes (-uv_pred auto) call it first: stock Draco takes minutes to
+// quantize an infinite GENERIC value and then throws std::bad_alloc.
+Status CheckTangentValues(const TangentCompressionOptions &options,
+                          const Mesh *mesh);
 
 // Applies |options| to every tangent attribute of |mesh| on |encoder|,
 // whose other settings (and the texture coordinates' coders) must already

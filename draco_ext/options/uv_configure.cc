@@ -49,6 +49,8 @@ StatusOr<std::string> ConfigureUvCompression(
     const UvCompressionOptions &options, const Mesh *mesh,
     ExpertEncoder *encoder) {
   DRACO_RETURN_IF_ERROR(CheckUvCompressionOptions(options));
+  // Before the UV coders' trial encodes, which would quantize them.
+  DRACO_RETURN_IF_ERROR(CheckTangentValues(options.tangent, mesh));
   DRACO_ASSIGN_OR_RETURN(const std::string seams,
                          ConfigureUvSeams(options.seams, mesh, encoder));
   std::string summary = seams;
@@ -99,6 +101,7 @@ StatusOr<std::string> ConfigureUvCompression(
       tangent = options.tangent;
     }
   }
+  DRACO_RETURN_IF_ERROR(CheckTangentValues(tangent, mesh));
   DRACO_ASSIGN_OR_RETURN(std::string summary,
                          ConfigureUvSeams(seam_coding, mesh, encoder));
   for (const auto &[att_id, options] : per_attribute) {

@@ -344,12 +344,68 @@ bool MeshPredictionSchemeGeometricTangentEncoder<DataTypeT, TransformT,
   return true;
 }
 
+// The grid on which Draco's SequentialQuantizationAttributeEncoder will
+// quantise the tangent attribute |att| (|att_id| in |options|): explicit
+// origin and range, else computed from the values. Invalid (IsValid()
+// false) where the attribute is not quantised to 1 to 21 bits, is not 4
+// float components, or where the grid is finer than the scheme's fixed
+// point holds (more than 2^20 steps per unit: tangents whose values span
+// less than (2^bits - 1) / 2^20 on every axis, such as nearly constant
+// ones), which the decoder would refuse.
+inline TangentGrid GeometricTangentGrid(const PointAttribute &att,
+                                        const EncoderOptions &options,
+                                        int att_id) {
+  TangentGrid grid;
+  const int bits = options.GetAttributeInt(att_id, "quantization_bits", -1);
+  if (bits < 1 || bits > 21 || att.num_components() != kTangentNumComponents ||
+      att.data_type() != DT_FLOAT32) {
+    return grid;
+  }
+  AttributeQuantizationTransform quantization;
+  if (options.IsAttributeOptionSet(att_id, "quantization_origin") &&
+      options.IsAttributeOptionSet(att_id, "quantization_range")) {
+    float origin[kTangentNumComponents];
+    options.GetAttributeVector(att_id, "quantization_origin",
+                               kTangentNumComponents, origin);
+    if (!quantization.SetParameters(
+            bits, origin, kTangentNumComponents,
+            options.GetAttributeFloat(att_id, "quantization_range", 1.f))) {
+      return grid;
+    }
+  } else if (!quantization.ComputeParameters(att, bits)) {
+    return grid;
+  }
+  // Draco's Quantizer: q = floor((v - min) * inverse_delta + 0.5) with the
+  // float inverse_delta = max / range.
+  const int32_t max_value = (1 << bits) - 1;
+  const double inverse_delta =
+      static_cast<float>(max_value) / quantization.range();
+  constexpr double kFraction = 1 << TangentGrid::kFractionBits;
+  // Beyond the int64 range (a tiny range) llround's result is unspecified:
+  // such a grid is invalid anyway.
+  const double scale = inverse_delta * kFraction;
+  if (!(scale > 0 && scale <= static_cast<double>(TangentGrid::kMaxScale))) {
+    return grid;
+  }
+  grid.max_value = max_value;
+  grid.scale = std::llround(scale);
+  for (int c = 0; c < kTangentNumComponents; ++c) {
+    const double offset =
+        -static_cast<double>(quantization.min_value(c)) * inverse_delta *
+        kFraction;
+    if (!(std::fabs(offset) <= static_cast<double>(TangentGrid::kMaxOffset))) {
+      return TangentGrid();
+    }
+    grid.offset[c] = std::llround(offset);
+  }
+  return grid;
+}
+
 // The settings of the tangent attribute |att_id| from |encoder|'s options:
 // the kinds the options layer asked for (geometric_tangent_settings.h), the
 // octahedral bits of the first NORMAL attribute, and the grid that Draco's
-// SequentialQuantizationAttributeEncoder will quantise with (explicit
-// origin and range, else computed from the values). An invalid grid where
-// the attribute is not quantised.
+// SequentialQuantizationAttributeEncoder will quantise with
+// (GeometricTangentGrid()).
 inline GeometricTangentEncoderSettings GetGeometricTangentEncoderSettings(
     const PointCloudEncoder &encoder, int att_id) {
   GeometricTangentEncoderSettings settings;
@@ -361,39 +417,7 @@ inline GeometricTangentEncoderSettings GetGeometricTangentEncoderSettings(
       normal_id < 0
           ? 0
           : options.GetAttributeInt(normal_id, "quantization_bits", -1);
-  const PointAttribute &att = *pc.attribute(att_id);
-  const int bits = options.GetAttributeInt(att_id, "quantization_bits", -1);
-  if (bits < 1 || bits > 21 || att.num_components() != kTangentNumComponents ||
-      att.data_type() != DT_FLOAT32) {
-    return settings;
-  }
-  AttributeQuantizationTransform quantization;
-  if (options.IsAttributeOptionSet(att_id, "quantization_origin") &&
-      options.IsAttributeOptionSet(att_id, "quantization_range")) {
-    float origin[kTangentNumComponents];
-    options.GetAttributeVector(att_id, "quantization_origin",
-                               kTangentNumComponents, origin);
-    if (!quantization.SetParameters(
-            bits, origin, kTangentNumComponents,
-            options.GetAttributeFloat(att_id, "quantization_range", 1.f))) {
-      return settings;
-    }
-  } else if (!quantization.ComputeParameters(att, bits)) {
-    return settings;
-  }
-  // Draco's Quantizer: q = floor((v - min) * inverse_delta + 0.5) with the
-  // float inverse_delta = max / range.
-  const int32_t max_value = (1 << bits) - 1;
-  const double inverse_delta =
-      static_cast<float>(max_value) / quantization.range();
-  constexpr double kFraction = 1 << TangentGrid::kFractionBits;
-  settings.grid.max_value = max_value;
-  settings.grid.scale = std::llround(inverse_delta * kFraction);
-  for (int c = 0; c < kTangentNumComponents; ++c) {
-    settings.grid.offset[c] = std::llround(
-        -static_cast<double>(quantization.min_value(c)) * inverse_delta *
-        kFraction);
-  }
+  settings.grid = GeometricTangentGrid(*pc.attribute(att_id), options, att_id);
   return settings;
 }
 

@@ -18,13 +18,17 @@
 // testdata/golden/lossy/) truncated at every byte, with bits
 // flipped, with the draco-uv header fields and the prediction scheme id
 // replaced by unknown values and with huge counts either decodes or fails with
-// a message; it never crashes, hangs or allocates without bound. The sanitizer
-// builds of scripts/fuzz.sh go further on the same seeds.
+// a message; it never crashes, hangs or allocates without bound. So do the
+// tangent golden files (testdata/golden/tangent_variants.tsv), with every
+// field of MESH_PREDICTION_GEOMETRIC_TANGENT's header set out of range. The
+// sanitizer builds of scripts/fuzz.sh go further on the same seeds.
 #include <sys/resource.h>
 
 #include <algorithm>
+#include <array>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 #include <random>
 #include <string>
 #include <vector>
@@ -38,8 +42,10 @@
 #include "draco/core/varint_encoding.h"
 #include "draco/io/file_utils.h"
 #include "draco_ext/common/uv_bitstream_guard.h"
+#include "draco_ext/common/uv_prediction_ids.h"
 #include "draco_ext/common/uv_residual_coder.h"
 #include "gtest/gtest.h"
+#include "prediction_schemes/tangent/mesh_prediction_scheme_geometric_tangent_shared.h"
 #include "prediction_schemes/weighted/mesh_prediction_scheme_tex_coords_weighted_shared.h"
 #include "tests/draco_uv_test_utils.h"
 
@@ -295,6 +301,284 @@ TEST(MalformedInputTest, UnknownOrMismatchedPredictionIdsAreRejected) {
     tried += 2;
   }
   RecordProperty("prediction_ids", tried);
+}
+
+// Where MESH_PREDICTION_GEOMETRIC_TANGENT's header lies in a file: the
+// bitstream guard, the format version after it and GeometricTangentConfig
+// from |config| to |streams| (the residual streams' start).
+struct TangentHeader {
+  int guard = -1;
+  int config = -1;
+  int streams = -1;
+  GeometricTangentConfig value;
+};
+
+// The last bitstream guard in |data| followed by the tangent format version
+// and a configuration the decoder accepts (the tangents are the texture
+// coordinates' child, so their header comes after a UV scheme's); guard -1
+// where there is none.
+TangentHeader FindTangentHeader(const std::vector<char> &data) {
+  char guard[8];
+  const int32_t words[2] = {kUvGuardFirst, kUvGuardSecond};
+  std::memcpy(guard, words, sizeof(guard));
+  TangentHeader found;
+  for (auto it = std::search(data.begin(), data.end(), guard, guard + 8);
+       it != data.end(); it = std::search(it + 1, data.end(), guard, guard + 8)) {
+    const int offset = static_cast<int>(it - data.begin());
+    if (offset + 9 >= static_cast<int>(data.size()) ||
+        data[offset + 8] != kGeometricTangentFormatVersion) {
+      continue;
+    }
+    DecoderBuffer buffer;
+    buffer.Init(data.data() + offset + 9, data.size() - offset - 9);
+    GeometricTangentConfig config;
+    if (config.Decode(&buffer)) {
+      found.guard = offset;
+      found.config = offset + 9;
+      found.streams = found.config + static_cast<int>(buffer.decoded_size());
+      found.value = config;
+    }
+  }
+  return found;
+}
+
+// |data| with the configuration of |header| replaced by |bytes|.
+std::vector<char> WithConfigBytes(const std::vector<char> &data,
+                                  const TangentHeader &header,
+                                  const std::vector<char> &bytes) {
+  std::vector<char> result(data.begin(), data.begin() + header.config);
+  result.insert(result.end(), bytes.begin(), bytes.end());
+  result.insert(result.end(), data.begin() + header.streams, data.end());
+  return result;
+}
+
+std::vector<char> ConfigBytes(const GeometricTangentConfig &config) {
+  EncoderBuffer buffer;
+  config.Encode(&buffer);
+  return std::vector<char>(buffer.data(), buffer.data() + buffer.size());
+}
+
+// The golden files of the tangent settings (rows of tangent_variants.tsv,
+// named tangent_*), split into those of the geometric scheme and those of
+// stock coding (tangent_draco_*).
+std::vector<GoldenFile> TangentGoldenFiles(bool geometric) {
+  std::vector<GoldenFile> files = GoldenFiles();
+  files.erase(std::remove_if(files.begin(), files.end(),
+                             [&](const GoldenFile &f) {
+                               return f.name.find(".tangent_") ==
+                                          std::string::npos ||
+                                      (f.name.find(".tangent_draco_") ==
+                                       std::string::npos) != geometric;
+                             }),
+              files.end());
+  return files;
+}
+
+// The stock-coded golden file of the same mesh and -qtg as |name|
+// (MESH.tangent_CONVENTION_qtgN.drc -> MESH.tangent_draco_qtgN.drc).
+std::string StockTangentName(const std::string &name) {
+  const size_t begin = name.find(".tangent_") + 9;
+  const size_t end = name.rfind("_qtg");
+  return name.substr(0, begin) + "draco" + name.substr(end);
+}
+
+// The golden rows really use the scheme (a stock fallback would pin
+// nothing of it), stock rows do not, and every tangent golden file decodes
+// to exactly the values of the stock-coded file of its mesh and -qtg.
+TEST(MalformedInputTest, TangentGoldenFilesUseTheSchemeAndDecodeToStockValues) {
+  const std::vector<GoldenFile> files = TangentGoldenFiles(true);
+  const std::vector<GoldenFile> stock = TangentGoldenFiles(false);
+  ASSERT_FALSE(files.empty()) << "run scripts/make-golden.sh";
+  ASSERT_FALSE(stock.empty());
+  for (const GoldenFile &file : stock) {
+    EXPECT_LT(FindTangentHeader(file.data).guard, 0) << file.name;
+  }
+  for (const GoldenFile &file : files) {
+    EXPECT_GE(FindTangentHeader(file.data).guard, 0) << file.name;
+    std::vector<char> reference;
+    ASSERT_TRUE(ReadFileToBuffer(
+        UvTestdataPath("golden/" + StockTangentName(file.name)), &reference))
+        << file.name;
+    const auto ours = DecodeDracoMesh(file.data);
+    const auto theirs = DecodeDracoMesh(reference);
+    ASSERT_TRUE(ours.ok() && theirs.ok()) << file.name;
+    for (const GeometryAttribute::Type type :
+         {GeometryAttribute::POSITION, GeometryAttribute::NORMAL,
+          GeometryAttribute::TEX_COORD, GeometryAttribute::GENERIC}) {
+      EXPECT_FALSE(CornerValues(*ours.value(), type).empty()) << file.name;
+      EXPECT_EQ(CornerValues(*ours.value(), type),
+                CornerValues(*theirs.value(), type))
+          << file.name << " attribute type " << type;
+    }
+  }
+}
+
+// Every field of the tangent scheme's header (after the guard: the format
+// version, then GeometricTangentConfig: the kind and handedness byte, the
+// texture coordinate index, the normals' octahedral bits, the step-2 gain,
+// the neighbour thresholds and the TangentGrid) set to values no encoder
+// writes, and the residual streams' table starts and first token count:
+// each file fails to decode with a message, within bounded memory.
+TEST(MalformedInputTest, TangentHeaderValuesOutOfRangeAreRejected) {
+  const std::vector<GoldenFile> files = TangentGoldenFiles(true);
+  ASSERT_FALSE(files.empty()) << "run scripts/make-golden.sh";
+  int tried = 0;
+  for (const GoldenFile &file : files) {
+    const TangentHeader header = FindTangentHeader(file.data);
+    ASSERT_GE(header.guard, 0) << file.name;
+    // Re-encoding the configuration gives back the file's bytes, so the
+    // variants below differ from it in the one field only.
+    ASSERT_EQ(WithConfigBytes(file.data, header, ConfigBytes(header.value)),
+              file.data)
+        << file.name;
+    const auto expect_rejected = [&](const std::vector<char> &data,
+                                     const std::string &what) {
+      EXPECT_FALSE(Decode(data).ok()) << file.name << ": " << what;
+      ++tried;
+    };
+    const auto with_config = [&](const std::string &what, auto change) {
+      GeometricTangentConfig config = header.value;
+      change(&config);
+      expect_rejected(WithConfigBytes(file.data, header, ConfigBytes(config)),
+                      what);
+    };
+    for (const int version : {0, 2, 3, 255}) {
+      std::vector<char> data = file.data;
+      data[header.guard + 8] = static_cast<char>(version);
+      expect_rejected(data, "format version " + std::to_string(version));
+    }
+    // The kind (bits 0-1, below kNumGeometricTangentKinds) and the
+    // handedness flag (bit 2); nothing else.
+    for (int byte = 0; byte < 256; ++byte) {
+      if ((byte & 3) < kNumGeometricTangentKinds && byte <= 7) {
+        continue;
+      }
+      std::vector<char> data = file.data;
+      data[header.config] = static_cast<char>(byte);
+      expect_rejected(data, "kind byte " + std::to_string(byte));
+    }
+    for (const int index : {1, 2, 127, 128, 1 << 30}) {
+      with_config("texture coordinate index " + std::to_string(index),
+                  [&](GeometricTangentConfig *c) { c->tex_coord_index = index; });
+    }
+    for (const int bits : {0, 1, 31, 32, 255}) {
+      with_config("normal bits " + std::to_string(bits),
+                  [&](GeometricTangentConfig *c) { c->normal_bits = bits; });
+    }
+    for (const int gain : {257, 1000, 65535}) {
+      with_config("gain " + std::to_string(gain),
+                  [&](GeometricTangentConfig *c) { c->coding.shift_gain = gain; });
+    }
+    for (const std::array<uint8_t, 2> thresholds :
+         {std::array<uint8_t, 2>{1, 0}, std::array<uint8_t, 2>{3, 2},
+          std::array<uint8_t, 2>{255, 0}}) {
+      with_config("thresholds " + std::to_string(thresholds[0]) + " > " +
+                      std::to_string(thresholds[1]),
+                  [&](GeometricTangentConfig *c) {
+                    c->coding.neighbour_thresholds = thresholds;
+                  });
+    }
+    // TangentGrid: the scale (0, beyond the fixed point's 2^36, the largest
+    // uint64), the largest value (2^30 and more), the offsets (beyond
+    // +-2^47, the int64 limits).
+    for (const int64_t scale :
+         {int64_t{0}, TangentGrid::kMaxScale + 1, int64_t{1} << 62,
+          std::numeric_limits<int64_t>::max(),
+          std::numeric_limits<int64_t>::min()}) {
+      with_config("grid scale " + std::to_string(scale),
+                  [&](GeometricTangentConfig *c) { c->coding.grid.scale = scale; });
+    }
+    for (const int32_t max_value :
+         {int32_t{1} << 30, std::numeric_limits<int32_t>::max(), -1}) {
+      with_config("grid max value " + std::to_string(max_value),
+                  [&](GeometricTangentConfig *c) {
+                    c->coding.grid.max_value = max_value;
+                  });
+    }
+    for (int c = 0; c < kTangentNumComponents; ++c) {
+      for (const int64_t offset :
+           {TangentGrid::kMaxOffset + 1, -TangentGrid::kMaxOffset - 1,
+            std::numeric_limits<int64_t>::max(),
+            std::numeric_limits<int64_t>::min()}) {
+        with_config("grid offset " + std::to_string(c) + " = " +
+                        std::to_string(offset),
+                    [&](GeometricTangentConfig *config) {
+                      config->coding.grid.offset[c] = offset;
+                    });
+      }
+    }
+    // The residual streams: table starts (uint16; context 0 never starts a
+    // table, there are no contexts from kTangentNumContexts on), then a
+    // token count of 2^32 - 1, far above the number of residuals.
+    for (const int bit : {0, kTangentNumContexts}) {
+      std::vector<char> data = file.data;
+      data[header.streams + bit / 8] |= static_cast<char>(1 << (bit % 8));
+      expect_rejected(data, "table start bit " + std::to_string(bit));
+    }
+    std::vector<char> huge(file.data.begin(),
+                           file.data.begin() + header.streams + 2);
+    huge.insert(huge.end(), {'\xff', '\xff', '\xff', '\xff', '\x0f'});
+    huge.insert(huge.end(), file.data.begin() + header.streams + 3,
+                file.data.end());
+    expect_rejected(huge, "huge token count");
+  }
+  EXPECT_LT(PeakRssKb(), kMaxPeakRssKb);
+  RecordProperty("tangent_header_values", tried);
+}
+
+// The tangent attribute's prediction scheme id: the last byte before the
+// scheme's guard that holds MESH_PREDICTION_GEOMETRIC_TANGENT followed by
+// the wrap transform's type (then come Draco's all-zero corrections, a few
+// bytes); -1 where there is none.
+int TangentPredictionIdOffset(const std::vector<char> &data, int guard) {
+  for (int p = guard - 2; p >= std::max(0, guard - 32); --p) {
+    if (data[p] == MESH_PREDICTION_GEOMETRIC_TANGENT &&
+        data[p + 1] == PREDICTION_TRANSFORM_WRAP) {
+      return p;
+    }
+  }
+  return -1;
+}
+
+// Unknown ids and the texture coordinate schemes' ids on the tangents, and
+// the tangent scheme's id on texture coordinates, fail with a message;
+// stock Draco's ids on the tangents decode or fail, never crash.
+TEST(MalformedInputTest, TangentPredictionIdsAreChecked) {
+  int tried = 0;
+  const int num_ids = NUM_PREDICTION_SCHEMES;
+  for (const GoldenFile &file : TangentGoldenFiles(true)) {
+    const int id =
+        TangentPredictionIdOffset(file.data, FindTangentHeader(file.data).guard);
+    ASSERT_GE(id, 0) << file.name;
+    // The offset is the id's: an unknown id there fails, the id decodes.
+    for (int value = -128; value < 128; ++value) {
+      std::vector<char> data = file.data;
+      data[id] = static_cast<char>(value);
+      const bool decoded = Decode(data).ok();
+      if (value == MESH_PREDICTION_GEOMETRIC_TANGENT) {
+        EXPECT_TRUE(decoded) << file.name;
+      } else if (value >= num_ids || value < PREDICTION_NONE ||
+                 IsDracoUvPredictionMethod(value)) {
+        EXPECT_FALSE(decoded) << file.name << ": id " << value;
+      }
+      ++tried;
+    }
+  }
+  for (const std::string mesh : {"torus_uv", "bumpy_cube_sphere", "cube_att"}) {
+    for (const std::string variant : {"weighted", "weighted_multi"}) {
+      std::vector<char> stock, ours;
+      ASSERT_TRUE(ReadFileToBuffer(
+          UvTestdataPath("golden/" + mesh + ".stock.drc"), &stock));
+      ASSERT_TRUE(ReadFileToBuffer(
+          UvTestdataPath("golden/" + mesh + "." + variant + ".drc"), &ours));
+      const int id = PredictionIdOffset(ours, stock);
+      ours[id] = MESH_PREDICTION_GEOMETRIC_TANGENT;
+      EXPECT_FALSE(Decode(ours).ok()) << mesh << "." << variant;
+      ++tried;
+    }
+  }
+  EXPECT_LT(PeakRssKb(), kMaxPeakRssKb);
+  RecordProperty("tangent_prediction_ids", tried);
 }
 
 // The prediction data of Draco's texture coordinate schemes for one

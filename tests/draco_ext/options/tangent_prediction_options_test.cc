@@ -174,20 +174,65 @@ TEST(TangentPredictionOptionsTest, KeepsStockCodingWhereInputsAreNotExact) {
   }
 }
 
-// Draco cannot quantize them either: a clear error, not a crash.
+// Draco cannot quantize them either: a clear error, not a crash; also as
+// GENERIC, where the other values still make them tangents, and before
+// -uv_pred auto's trial encodes (stock Draco takes minutes over an infinite
+// GENERIC value, then throws std::bad_alloc).
 TEST(TangentPredictionOptionsTest, NonFiniteTangentsAreAnError) {
-  Mesh mesh;
-  mesh.Copy(*Spot());
-  const float inf[4] = {std::numeric_limits<float>::infinity(), 0, 0, 1};
-  mesh.attribute(TangentId(mesh))->SetAttributeValue(AttributeValueIndex(5),
-                                                     inf);
-  EncoderBuffer buffer;
-  const Status status =
-      EncodeMeshWithSettings(mesh, TangentSettings("auto"), &buffer);
-  EXPECT_FALSE(status.ok());
-  EXPECT_NE(std::string(status.error_msg()).find("NaN or infinite"),
-            std::string::npos)
-      << status.error_msg();
+  for (const GeometryAttribute::Type type :
+       {GeometryAttribute::TANGENT, GeometryAttribute::GENERIC}) {
+    for (const float bad : {std::numeric_limits<float>::infinity(),
+                            std::numeric_limits<float>::quiet_NaN()}) {
+      Mesh mesh;
+      mesh.Copy(*Spot());
+      const int id = TangentId(mesh);
+      const float value[4] = {bad, 0, 0, 1};
+      mesh.attribute(id)->SetAttributeValue(AttributeValueIndex(5), value);
+      mesh.attribute(id)->set_attribute_type(type);
+      for (const char *uv : {"", "auto"}) {
+        EncoderBuffer buffer;
+        const Status status = EncodeMeshWithSettings(
+            mesh, TangentSettings("auto", 7, uv), &buffer);
+        EXPECT_FALSE(status.ok()) << type << " " << uv;
+        EXPECT_NE(std::string(status.error_msg()).find("NaN or infinite"),
+                  std::string::npos)
+            << status.error_msg();
+      }
+    }
+  }
+}
+
+// Draco spreads the 2^qtg quantization steps over the range of the values;
+// where that range is small (tangents that barely vary; all w = 1 and at
+// -qtg 21 already a range below 2) the grid is finer than the scheme's
+// fixed point (2^20 steps per unit), the encoder used to fail ("Failed to
+// encode point attributes") and the decoder would refuse the grid. Every
+// name keeps stock coding there and says why.
+TEST(TangentPredictionOptionsTest, TooFineAGridKeepsStockCoding) {
+  Mesh narrow;
+  narrow.Copy(*Spot());
+  PointAttribute *const tangents = narrow.attribute(TangentId(narrow));
+  for (AttributeValueIndex i(0); i < tangents->size(); ++i) {
+    // Unit tangents within 0.004 degrees of +x, w = 1.
+    const float a = 1e-5f * static_cast<float>(i.value() % 7);
+    const float value[4] = {std::cos(a), std::sin(a), 0, 1};
+    tangents->SetAttributeValue(i, value);
+  }
+  for (const int bits : {8, 12}) {
+    for (const char *name : {"auto", "mikktspace", "geometric"}) {
+      UvEncodeSettings settings = TangentSettings(name);
+      settings.uv.tangent.quantization_bits = bits;
+      UvEncodeSettings stock_settings = TangentSettings("draco");
+      stock_settings.uv.tangent.quantization_bits = bits;
+      const Encoded ours = Encode(narrow, settings);
+      const Encoded stock = Encode(narrow, stock_settings);
+      EXPECT_NE(ours.summary.find("keeps stock coding: its values span too "
+                                  "small a range"),
+                std::string::npos)
+          << ours.summary;
+      EXPECT_EQ(ours.bytes, stock.bytes) << name << " " << bits;
+    }
+  }
 }
 
 TEST(TangentPredictionOptionsTest, MeshesWithoutTangentsAreUntouched) {
