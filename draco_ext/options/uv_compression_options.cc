@@ -297,6 +297,12 @@ Status ParseUvCompressionFlag(int argc, char **argv, int *index,
                               UvCompressionOptions *options) {
   const std::string flag = argv[*index];
   if (*index + 1 >= argc) {
+    // -qtg has stock draco_transcoder's name: at the end of the command line
+    // it is skipped with the warning of stock's -qp there.
+    if (IsStockToolValueFlag(flag) &&
+        CheckUnhandledToolArg(argc, argv, *index)) {
+      return OkStatus();
+    }
     return ErrorStatus(flag + " needs a value.");
   }
   const std::string value = argv[++*index];
