@@ -16,9 +16,11 @@
 
 #include <cmath>
 
+#include "draco/attributes/attribute_quantization_transform.h"
 #include "draco/core/encoder_buffer.h"
 #include "draco/draco_features.h"
 #include "draco_ext/options/uv_compression_options.h"
+#include "prediction_schemes/tangent/geometric_tangent_coder.h"
 #include "prediction_schemes/tangent/geometric_tangent_settings.h"
 
 namespace draco {
@@ -58,6 +60,31 @@ bool HasFiniteValues(const PointAttribute &att) {
     }
   }
   return true;
+}
+
+// Whether the scheme's fixed point holds tangent attribute |att_id| of
+// |mesh| quantized to |bits|: at most 2^20 quantization steps per unit
+// (TangentGrid::kMaxScale). Draco quantizes the four components with one
+// step, the largest component range over 2^bits - 1, so tangents that barely
+// vary (all along one axis, as on a flat asset) do not fit. Computes the
+// grid as GetGeometricTangentEncoderSettings() does.
+bool FitsTheTangentGrid(const Mesh &mesh, const EncoderOptions &options,
+                        int att_id, int bits) {
+  float range = 0;
+  if (options.IsAttributeOptionSet(att_id, "quantization_origin") &&
+      options.IsAttributeOptionSet(att_id, "quantization_range")) {
+    range = options.GetAttributeFloat(att_id, "quantization_range", 1.f);
+  } else {
+    AttributeQuantizationTransform quantization;
+    if (!quantization.ComputeParameters(*mesh.attribute(att_id), bits)) {
+      return false;
+    }
+    range = quantization.range();
+  }
+  const double inverse_delta = static_cast<float>((1 << bits) - 1) / range;
+  return range > 0 &&
+         std::llround(inverse_delta * (1 << TangentGrid::kFractionBits)) <=
+             TangentGrid::kMaxScale;
 }
 
 bool IsQuantized(const ExpertEncoder &encoder, int att_id) {
@@ -215,7 +242,13 @@ std::string WhyNoGeometricTangentPrediction(const Mesh &mesh,
            std::to_string(TangentCompressionOptions::kMaxQuantizationBits) +
            " bits";
   }
-  return HasFiniteValues(att) ? "" : "NaN or infinite values";
+  if (!HasFiniteValues(att)) {
+    return "NaN or infinite values";
+  }
+  return FitsTheTangentGrid(mesh, encoder.options(), att_id, bits)
+             ? ""
+             : "its values vary too little for the prediction's fixed point "
+               "(over 2^20 quantization steps per unit)";
 }
 
 StatusOr<std::string> ConfigureTangentPrediction(

@@ -45,7 +45,8 @@ std::vector<int> TangentAttributeIds(const Mesh &mesh);
 // Edgebreaker with an attribute connectivity of its own (-cl 5 to 10),
 // quantized positions, a NORMAL attribute with quantized (octahedral)
 // normals, a first TEX_COORD attribute coded losslessly on its quantization
-// grid, quantized tangents of at most 21 bits, finite values.
+// grid, quantized tangents of at most 21 bits, finite values that vary
+// enough for the scheme's fixed point (not all along one axis).
 std::string WhyNoGeometricTangentPrediction(const Mesh &mesh,
                                             const ExpertEncoder &encoder,
                                             int att_id);
