@@ -212,6 +212,7 @@ TEST_F(UvGltfEncoderTest, ExtensionIsRequiredExactlyForDracoUvSchemes) {
 TEST(UvGltfTranscodeTest, EveryAssetRoundTripsLikeStockCoding) {
   UvGltfEvalOptions options;
   options.schemes = {"weighted"};
+  options.tangents = {"draco"};
   int evaluated = 0, textured = 0;
   for (const std::string &asset : DracoTestdataGltfAssets()) {
     for (const bool glb : {false, true}) {
@@ -239,6 +240,7 @@ TEST(UvGltfTranscodeTest, EveryAssetRoundTripsLikeStockCoding) {
 TEST(UvGltfTranscodeTest, ContextSeamsRoundTripAndRequireTheExtension) {
   UvGltfEvalOptions options;
   options.schemes = {"draco+context", "weighted+context"};
+  options.tangents = {"draco"};
   int textured = 0;
   for (const std::string &asset : DracoTestdataGltfAssets()) {
     const auto rows = EvaluateGltfAsset(DracoTestdataPath(asset), asset,
@@ -258,9 +260,39 @@ TEST(UvGltfTranscodeTest, ContextSeamsRoundTripAndRequireTheExtension) {
   EXPECT_GE(textured, 60);
 }
 
+// draco_transcoder -tangent_pred mikktspace on every glTF/GLB asset of
+// Draco's testdata (tangents with one or two UV sets, several primitives,
+// shared meshes, skins, none at all): every attribute reads back like
+// stock coding, and the file requires the extension only where it has
+// tangents.
+TEST(UvGltfTranscodeTest, TangentPredictionRoundTripsOnEveryAsset) {
+  UvGltfEvalOptions options;
+  options.schemes = {"draco"};
+  options.tangents = {"mikktspace"};
+  options.glb = true;
+  int with_tangents = 0;
+  for (const std::string &asset : DracoTestdataGltfAssets()) {
+    const auto rows = EvaluateGltfAsset(DracoTestdataPath(asset), asset,
+                                        options, UvTempPath(""));
+    if (!rows.ok()) {
+      continue;  // Morph targets etc.: stock draco_transcoder fails too.
+    }
+    for (const UvGltfEvalRow &row : rows.value()) {
+      EXPECT_TRUE(row.round_trip_ok) << asset << ": " << row.detail;
+      with_tangents += !row.tangent_costs.empty();
+      if (row.tangent_costs.empty()) {
+        EXPECT_FALSE(row.requires_extension) << asset;
+        EXPECT_EQ(row.bytes, row.stock_bytes) << asset;
+      }
+    }
+  }
+  EXPECT_GE(with_tangents, 15);
+}
+
 TEST(UvGltfTranscodeTest, AutoRoundTripsOnAssetsOfEveryKind) {
   UvGltfEvalOptions options;
   options.schemes = {"auto"};
+  options.tangents = {"auto"};
   for (const std::string asset :
        {"CesiumMilkTruck/glTF/CesiumMilkTruck.gltf",
         "MultiUVTest/glTF/MultiUVTest.gltf",
@@ -282,6 +314,7 @@ TEST(UvGltfTranscodeTest, AutoRoundTripsOnAssetsOfEveryKind) {
 TEST(UvGltfTranscodeTest, LaplacianRoundTripsOnAssetsOfEveryKind) {
   UvGltfEvalOptions options;
   options.schemes = {"laplacian_mv", "laplacian_cotan"};
+  options.tangents = {"draco"};
   for (const std::string asset :
        {"CesiumMilkTruck/glTF/CesiumMilkTruck.gltf",
         "MultiUVTest/glTF/MultiUVTest.gltf",
