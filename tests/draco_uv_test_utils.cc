@@ -84,6 +84,26 @@ std::vector<std::string> TexturedObjPlyMeshPaths() {
   return paths;
 }
 
+std::vector<std::string> TangentGltfAssetPaths() {
+  std::vector<std::string> paths = {
+      UvTestdataPath("small_torus_uv_tangents.glb"),
+      UvTestdataPath("small_cube_sphere_tangents.glb"),
+      UvTestdataPath("crane_spot_tangents.glb")};
+  const fs::path dir = fs::path(CorpusDir()) / "gltf";
+  if (!fs::is_directory(dir)) {
+    return paths;
+  }
+  std::vector<std::string> corpus;
+  for (const auto &entry : fs::directory_iterator(dir)) {
+    if (entry.path().extension() == ".gltf") {
+      corpus.push_back(entry.path().string());
+    }
+  }
+  std::sort(corpus.begin(), corpus.end());
+  paths.insert(paths.end(), corpus.begin(), corpus.end());
+  return paths;
+}
+
 std::vector<std::string> CorpusMeshPaths() {
   std::vector<std::string> meshes;
   const fs::path dir = fs::path(CorpusDir()) / "meshes";

@@ -43,6 +43,11 @@ std::vector<std::string> TexturedObjPlyMeshPaths();
 // The corpus's meshes/*.obj; empty when the corpus is absent.
 std::vector<std::string> CorpusMeshPaths();
 
+// Full paths of glTF assets with tangents: the bundled CC0 GLBs with
+// MikkTSpace tangents (testdata/*_tangents.glb), then the corpus's Khronos
+// glTFs with their own tangents (gltf/*.gltf, when the corpus is there).
+std::vector<std::string> TangentGltfAssetPaths();
+
 StatusOr<std::unique_ptr<Mesh>> ReadTestMesh(const std::string &path);
 
 // The draco-uv options of |scheme|, "<uv_pred>[+<uv_seams>]" as

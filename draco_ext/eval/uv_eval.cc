@@ -28,6 +28,7 @@
 #include "draco/mesh/mesh_misc_functions.h"
 #include "draco_ext/common/uv_vertices.h"
 #include "draco_ext/eval/uv_seam_stats.h"
+#include "draco_ext/options/tangent_prediction_options.h"
 #include "draco_ext/options/uv_encode_settings.h"
 #include "draco_ext/options/uv_error_target.h"
 
@@ -373,6 +374,135 @@ StatusOr<UvCompressionOptions> ParseUvSchemeName(const std::string &scheme) {
                            ParseUvSeamCodingName(scheme.substr(plus + 1)));
   }
   return options;
+}
+
+namespace {
+
+// The mesh without its tangent attributes (points that then coincide
+// merge).
+std::unique_ptr<Mesh> WithoutTangents(const Mesh &mesh) {
+  std::unique_ptr<Mesh> copy(new Mesh());
+  copy->Copy(mesh);
+  const std::vector<int> ids = TangentAttributeIds(mesh);
+  for (auto it = ids.rbegin(); it != ids.rend(); ++it) {
+    copy->DeleteAttribute(*it);
+  }
+#ifdef DRACO_ATTRIBUTE_INDICES_DEDUPLICATION_SUPPORTED
+  copy->DeduplicatePointIds();
+#endif
+  return copy;
+}
+
+// Tangent values at every face corner, all tangent attributes, in face
+// order.
+std::vector<float> CornerTangents(const Mesh &mesh) {
+  std::vector<float> values;
+  for (const int att_id : TangentAttributeIds(mesh)) {
+    const PointAttribute &att = *mesh.attribute(att_id);
+    std::vector<float> value(att.num_components());
+    for (FaceIndex f(0); f < mesh.num_faces(); ++f) {
+      for (const PointIndex point : mesh.face(f)) {
+        att.ConvertValue(att.mapped_index(point), att.num_components(),
+                         value.data());
+        values.insert(values.end(), value.begin(), value.end());
+      }
+    }
+  }
+  return values;
+}
+
+// draco_encoder -qp -qt -cl with |scheme| and -tangent_pred |tangents|
+// -qtg |qtg|.
+StatusOr<UvEncodeSettings> TangentSettings(const UvEvalOptions &options, int qt,
+                                           const std::string &scheme,
+                                           const std::string &tangents,
+                                           int qtg) {
+  UvEncodeSettings settings{options.qp, qt, options.cl};
+  DRACO_ASSIGN_OR_RETURN(settings.uv, ParseUvSchemeName(scheme));
+  DRACO_ASSIGN_OR_RETURN(settings.uv.tangent.prediction,
+                         ParseTangentPredictionName(tangents));
+  settings.uv.tangent.quantization_bits = qtg;
+  return settings;
+}
+
+// One encode with tangents, decoded, and one without them.
+struct TangentEncoding {
+  int64_t bytes = 0;
+  int64_t tangent_bytes = 0;
+  std::vector<float> tangents;  // Decoded, at every corner.
+  std::string summary;
+};
+
+StatusOr<TangentEncoding> EncodeTangents(const Mesh &mesh, const Mesh &without,
+                                         const UvEncodeSettings &settings) {
+  TangentEncoding encoding;
+  EncoderBuffer buffer;
+  DRACO_RETURN_IF_ERROR(
+      EncodeMeshWithSettings(mesh, settings, &buffer, &encoding.summary));
+  double ms;
+  DRACO_ASSIGN_OR_RETURN(const auto decoded, DecodeTimed(buffer, 1, &ms));
+  encoding.tangents = CornerTangents(*decoded);
+  encoding.bytes = static_cast<int64_t>(buffer.size());
+  DRACO_ASSIGN_OR_RETURN(const int64_t without_bytes,
+                         EncodedSize(without, settings));
+  encoding.tangent_bytes = encoding.bytes - without_bytes;
+  return encoding;
+}
+
+// The rows of one qt and qtg, against stock coding there.
+Status MeasureTangentsAt(const std::string &name, const Mesh &mesh,
+                         const Mesh &without, const UvEvalOptions &options,
+                         int qt, int qtg, std::vector<TangentEvalRow> *rows) {
+  DRACO_ASSIGN_OR_RETURN(const UvEncodeSettings stock_settings,
+                         TangentSettings(options, qt, "draco", "draco", qtg));
+  DRACO_ASSIGN_OR_RETURN(const TangentEncoding stock,
+                         EncodeTangents(mesh, without, stock_settings));
+  for (const std::string &scheme : MeasuredSchemes(options)) {
+    for (const std::string &tangents : options.tangents) {
+      DRACO_ASSIGN_OR_RETURN(
+          const UvEncodeSettings settings,
+          TangentSettings(options, qt, scheme, tangents, qtg));
+      DRACO_ASSIGN_OR_RETURN(const TangentEncoding encoding,
+                             EncodeTangents(mesh, without, settings));
+      TangentEvalRow row;
+      row.mesh = name;
+      row.scheme = scheme;
+      row.tangents = tangents;
+      row.qt = qt;
+      row.qtg = qtg;
+      row.tangent_values = mesh.num_points();
+      row.tangent_bytes = encoding.tangent_bytes;
+      row.stock_tangent_bytes = stock.tangent_bytes;
+      row.bytes = encoding.bytes;
+      row.stock_bytes = stock.bytes;
+      row.round_trip_ok = encoding.tangents == stock.tangents;
+      row.detail = encoding.summary;
+      rows->push_back(std::move(row));
+    }
+  }
+  return OkStatus();
+}
+
+}  // namespace
+
+bool HasTangents(const Mesh &mesh) {
+  return !TangentAttributeIds(mesh).empty();
+}
+
+StatusOr<std::vector<TangentEvalRow>> EvaluateMeshTangents(
+    const std::string &name, const Mesh &mesh, const UvEvalOptions &options) {
+  std::vector<TangentEvalRow> rows;
+  if (!HasTangents(mesh)) {
+    return rows;
+  }
+  const std::unique_ptr<Mesh> without = WithoutTangents(mesh);
+  for (const int qt : options.qt) {
+    for (const int qtg : options.qtg) {
+      DRACO_RETURN_IF_ERROR(
+          MeasureTangentsAt(name, mesh, *without, options, qt, qtg, &rows));
+    }
+  }
+  return rows;
 }
 
 StatusOr<std::vector<UvEvalRow>> EvaluateMesh(const std::string &name,

@@ -14,7 +14,8 @@
 //
 // Measurements behind draco_uv_eval and the benchmarks: what each UV coder
 // costs on a mesh, in the terms of [Váša & Brunnett 2014] section 6 (bits
-// per UV vertex, RMSE of eq. 9) plus encode and decode times.
+// per UV vertex, RMSE of eq. 9) plus encode and decode times; on meshes with
+// tangents also what each tangent coder costs.
 #ifndef DRACO_EXT_EVAL_UV_EVAL_H_
 #define DRACO_EXT_EVAL_UV_EVAL_H_
 
@@ -50,6 +51,11 @@ struct UvEvalOptions {
   // row of scheme "rmse" (with seams: "rmse+<coding>") with exactly what
   // draco_encoder -uv_rmse R writes, qt 0.
   std::vector<double> rmse_targets;
+  // Meshes with tangents (glTF TANGENT): -tangent_pred names measured with
+  // every scheme at every qt and qtg ("draco": stock tangent coding, the
+  // scheme alone), and the -qtg values (draco_transcoder's default 8).
+  std::vector<std::string> tangents = {"draco", "auto"};
+  std::vector<int> qtg = {8};
 };
 
 // The options a measured scheme name stands for: "<uv_pred>[+<uv_seams>]",
@@ -88,6 +94,34 @@ struct UvEvalRow {
   int lossless_qt = 0;
 };
 
+// One (mesh, scheme, qt, tangents, qtg) measurement of a mesh with
+// tangents, encoded like draco_encoder -qp -qt -cl -uv_pred -uv_seams
+// -tangent_pred -qtg.
+struct TangentEvalRow {
+  std::string mesh;
+  std::string scheme;    // As in UvEvalRow: "<uv_pred>[+<uv_seams>]".
+  std::string tangents;  // The -tangent_pred name.
+  int qt = 0;
+  int qtg = 0;
+  // The mesh's points: one TANGENT value each, as glTF stores a value per
+  // vertex.
+  int64_t tangent_values = 0;
+  // size(with tangents) - size(without tangents), with these settings and
+  // with stock Draco's at the same qt and qtg (-tangent_pred draco, stock
+  // UV coding).
+  int64_t tangent_bytes = 0;
+  int64_t stock_tangent_bytes = 0;
+  // Whole files: these settings and stock Draco's.
+  int64_t bytes = 0;
+  int64_t stock_bytes = 0;
+  // Decoded tangents equal those of the stock-coded file at every corner.
+  bool round_trip_ok = false;
+  std::string detail;  // What the encoder chose (ConfigureUvCompression()).
+};
+
+// True when |mesh| has a tangent attribute (TangentAttributeIds()).
+bool HasTangents(const Mesh &mesh);
+
 // Distinct (position, texture coordinate) pairs over all TEX_COORD
 // attributes: the texture vertices the paper counts.
 int64_t CountUvVertices(const Mesh &mesh);
@@ -105,6 +139,11 @@ double StockSeamBytes(const Mesh &mesh);
 StatusOr<std::vector<UvEvalRow>> EvaluateMesh(const std::string &name,
                                               const Mesh &mesh,
                                               const UvEvalOptions &options);
+
+// Measures every scheme and tangent name of |options| at every qt and qtg
+// on |mesh|, in that nesting (qt outermost); none without tangents.
+StatusOr<std::vector<TangentEvalRow>> EvaluateMeshTangents(
+    const std::string &name, const Mesh &mesh, const UvEvalOptions &options);
 
 }  // namespace draco
 

@@ -15,6 +15,7 @@
 #include "draco_ext/eval/uv_eval_report.h"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cstdarg>
 #include <cstdio>
@@ -22,6 +23,7 @@
 #include <fstream>
 #include <numeric>
 #include <sstream>
+#include <tuple>
 
 namespace draco {
 
@@ -188,8 +190,99 @@ std::string CsvLine(const UvEvalRow &row) {
          TargetChoice(row) + "\n";
 }
 
+namespace {
+
+double TangentBits(int64_t bytes, int64_t values) {
+  return values > 0 ? 8.0 * bytes / values : 0.0;
+}
+
+double RatioOf(int64_t bytes, int64_t stock_bytes) {
+  return stock_bytes > 0 ? static_cast<double>(bytes) / stock_bytes : 0.0;
+}
+
+}  // namespace
+
+std::string FormatTangentTable(const std::vector<TangentEvalRow> &rows) {
+  if (rows.empty()) {
+    return "";
+  }
+  std::string table =
+      Format("%s: %lld tangent values (points)\n", rows[0].mesh.c_str(),
+             static_cast<long long>(rows[0].tangent_values));
+  table += Format("  %3s %4s %-20s %-10s %13s %8s %7s %10s %7s %s\n", "qt",
+                  "qtg", "scheme", "tangents", "tangent bytes", "bits", "ratio",
+                  "bytes", "ratio", "round trip");
+  for (const TangentEvalRow &row : rows) {
+    table += Format(
+        "  %3d %4d %-20s %-10s %13lld %8.3f %7.3f %10lld %7.3f %s\n", row.qt,
+        row.qtg, row.scheme.c_str(), row.tangents.c_str(),
+        static_cast<long long>(row.tangent_bytes),
+        TangentBits(row.tangent_bytes, row.tangent_values),
+        RatioOf(row.tangent_bytes, row.stock_tangent_bytes),
+        static_cast<long long>(row.bytes), RatioOf(row.bytes, row.stock_bytes),
+        row.round_trip_ok ? "ok" : "MISMATCH");
+  }
+  return table;
+}
+
+std::string TangentCsvHeader() {
+  return "mesh,scheme,tangents,qt,qtg,tangent_values,tangent_bytes,"
+         "stock_tangent_bytes,bits_per_tangent,tangent_ratio,bytes,"
+         "stock_bytes,file_ratio,round_trip\n";
+}
+
+std::string TangentCsvLine(const TangentEvalRow &row) {
+  return Format("%s,%s,%s,%d,%d,%lld,%lld,%lld,%.4f,%.4f,%lld,%lld,%.4f,%s\n",
+                row.mesh.c_str(), row.scheme.c_str(), row.tangents.c_str(),
+                row.qt, row.qtg, static_cast<long long>(row.tangent_values),
+                static_cast<long long>(row.tangent_bytes),
+                static_cast<long long>(row.stock_tangent_bytes),
+                TangentBits(row.tangent_bytes, row.tangent_values),
+                RatioOf(row.tangent_bytes, row.stock_tangent_bytes),
+                static_cast<long long>(row.bytes),
+                static_cast<long long>(row.stock_bytes),
+                RatioOf(row.bytes, row.stock_bytes),
+                row.round_trip_ok ? "ok" : "mismatch");
+}
+
 void UvEvalReport::Add(const std::vector<UvEvalRow> &rows) {
   rows_.insert(rows_.end(), rows.begin(), rows.end());
+}
+
+void UvEvalReport::AddTangents(const std::vector<TangentEvalRow> &rows) {
+  tangent_rows_.insert(tangent_rows_.end(), rows.begin(), rows.end());
+}
+
+std::string UvEvalReport::FormatTangentSummary() const {
+  if (tangent_rows_.empty()) {
+    return "";
+  }
+  // (qt, qtg, scheme, tangents) -> ratios, bits, file ratios.
+  using Key = std::tuple<int, int, std::string, std::string>;
+  std::map<Key, std::array<std::vector<double>, 3>> values;
+  for (const TangentEvalRow &row : tangent_rows_) {
+    auto &entry = values[Key(row.qt, row.qtg, row.scheme, row.tangents)];
+    entry[0].push_back(RatioOf(row.tangent_bytes, row.stock_tangent_bytes));
+    entry[1].push_back(TangentBits(row.tangent_bytes, row.tangent_values));
+    entry[2].push_back(RatioOf(row.bytes, row.stock_bytes));
+  }
+  std::string summary = Format(
+      "Summary: tangent bytes / stock Draco's at the same qt and qtg (meshes "
+      "with tangents)\n"
+      "  %-48s %6s %8s %8s %8s %9s %10s\n",
+      "qt, qtg, scheme, -tangent_pred", "n", "median", "mean", "max",
+      "med bits", "med file");
+  for (const auto &[key, entry] : values) {
+    const std::string label =
+        Format("qt %d qtg %d %s %s", std::get<0>(key), std::get<1>(key),
+               std::get<2>(key).c_str(), std::get<3>(key).c_str());
+    summary +=
+        Format("  %-48s %6zu %8.3f %8.3f %8.3f %9.2f %10.3f\n", label.c_str(),
+               entry[0].size(), Median(entry[0]), Mean(entry[0]),
+               *std::max_element(entry[0].begin(), entry[0].end()),
+               Median(entry[1]), Median(entry[2]));
+  }
+  return summary;
 }
 
 std::string UvEvalReport::FormatSummary() const {
@@ -223,7 +316,7 @@ std::string UvEvalReport::FormatSummary() const {
                       group.second, bpvs.at(entry.first).at(group.first));
     }
   }
-  return summary;
+  return summary + FormatTangentSummary();
 }
 
 bool UvEvalReport::WriteCsv(const std::string &path) const {
@@ -249,9 +342,21 @@ bool UvEvalReport::WritePlot(const std::string &path) const {
   return ok;
 }
 
+bool UvEvalReport::WriteTangentCsv(const std::string &path) const {
+  std::ofstream file(path);
+  file << TangentCsvHeader();
+  for (const TangentEvalRow &row : tangent_rows_) {
+    file << TangentCsvLine(row);
+  }
+  return static_cast<bool>(file);
+}
+
 bool UvEvalReport::AllRoundTripsOk() const {
   return std::all_of(rows_.begin(), rows_.end(),
-                     [](const UvEvalRow &row) { return row.round_trip_ok; });
+                     [](const UvEvalRow &row) { return row.round_trip_ok; }) &&
+         std::all_of(
+             tangent_rows_.begin(), tangent_rows_.end(),
+             [](const TangentEvalRow &row) { return row.round_trip_ok; });
 }
 
 }  // namespace draco

@@ -37,24 +37,36 @@ std::string FormatMeshTable(const std::vector<UvEvalRow> &rows);
 std::string CsvHeader();
 std::string CsvLine(const UvEvalRow &row);
 
+// The per-mesh tangent table printed after a mesh with tangents, and its
+// CSV columns.
+std::string FormatTangentTable(const std::vector<TangentEvalRow> &rows);
+std::string TangentCsvHeader();
+std::string TangentCsvLine(const TangentEvalRow &row);
+
 class UvEvalReport {
  public:
   explicit UvEvalReport(std::map<std::string, std::string> kinds)
       : kinds_(std::move(kinds)) {}
 
   void Add(const std::vector<UvEvalRow> &rows);
+  void AddTangents(const std::vector<TangentEvalRow> &rows);
   // Median / mean / max ratio to stock per scheme and qt, over all meshes
-  // and per mesh kind.
+  // and per mesh kind; with tangent rows, the same of the tangent bytes per
+  // qt, qtg, scheme and tangent name.
   std::string FormatSummary() const;
   bool WriteCsv(const std::string &path) const;
+  bool WriteTangentCsv(const std::string &path) const;
   // Bits per UV vertex against RMSE, one curve per scheme and one panel per
   // mesh, drawn by draco_uv_plot.py with matplotlib.
   bool WritePlot(const std::string &path) const;
   bool AllRoundTripsOk() const;
 
  private:
+  std::string FormatTangentSummary() const;
+
   std::map<std::string, std::string> kinds_;
   std::vector<UvEvalRow> rows_;
+  std::vector<TangentEvalRow> tangent_rows_;
 };
 
 }  // namespace draco

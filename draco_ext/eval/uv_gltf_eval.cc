@@ -19,13 +19,18 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <map>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <set>
 
+#include "draco/io/gltf_encoder.h"
 #include "draco/io/scene_io.h"
+#include "draco/scene/scene_utils.h"
 #include "draco/tools/draco_transcoder_lib.h"
 #include "draco_ext/eval/uv_eval.h"
 #include "draco_ext/gltf/uv_gltf_extension.h"
+#include "draco_ext/options/tangent_compression_options.h"
 
 namespace draco {
 
@@ -69,6 +74,23 @@ StatusOr<nlohmann::json> ReadGltfJson(const std::string &file) {
     return ErrorStatus("Invalid glTF JSON in " + file);
   }
   return json;
+}
+
+// |json|'s member |key|, or null when |json| is no object or lacks it.
+const nlohmann::json &Member(const nlohmann::json &json, const char *key) {
+  static const nlohmann::json kNull;
+  if (!json.is_object()) {
+    return kNull;
+  }
+  const auto it = json.find(key);
+  return it == json.end() ? kNull : *it;
+}
+
+// |json|'s integer member |key|, or |fallback|.
+int64_t IntMember(const nlohmann::json &json, const char *key,
+                  int64_t fallback) {
+  const nlohmann::json &value = Member(json, key);
+  return value.is_number_integer() ? value.get<int64_t>() : fallback;
 }
 
 bool IsDataUri(const std::string &uri) { return uri.rfind("data:", 0) == 0; }
@@ -192,73 +214,285 @@ Status CompareSceneGeometry(const Scene &expected, const Scene &actual,
     if (a.num_faces() != b.num_faces()) {
       return ErrorStatus(label + ": different number of faces");
     }
-    DRACO_RETURN_IF_ERROR(CompareNamedAttributes(
-        a, b, GeometryAttribute::POSITION, label + " POSITION"));
-    if (!compare_tex_coords) {
-      if (a.NumNamedAttributes(GeometryAttribute::TEX_COORD) !=
-          b.NumNamedAttributes(GeometryAttribute::TEX_COORD)) {
-        return ErrorStatus(label + ": different number of TEX_COORD sets");
+    for (int t = 0; t < GeometryAttribute::NAMED_ATTRIBUTES_COUNT; ++t) {
+      const auto type = static_cast<GeometryAttribute::Type>(t);
+      const std::string name =
+          label + " " + GeometryAttribute::TypeToString(type);
+      if (type == GeometryAttribute::TEX_COORD && !compare_tex_coords) {
+        if (a.NumNamedAttributes(type) != b.NumNamedAttributes(type)) {
+          return ErrorStatus(name + ": different number of attribute sets");
+        }
+        continue;
       }
-      continue;
+      DRACO_RETURN_IF_ERROR(CompareNamedAttributes(a, b, type, name));
     }
-    DRACO_RETURN_IF_ERROR(CompareNamedAttributes(
-        a, b, GeometryAttribute::TEX_COORD, label + " TEX_COORD"));
   }
   return OkStatus();
 }
 
+double TangentBitsPerValue(int64_t bytes, int64_t values) {
+  return values > 0 ? 8.0 * bytes / values : 0.0;
+}
+
+double UvGltfRatio(int64_t bytes, int64_t stock_bytes) {
+  return stock_bytes > 0 ? static_cast<double>(bytes) / stock_bytes : 0.0;
+}
+
+StatusOr<std::vector<GltfDracoPrimitive>> ReadGltfDracoPrimitives(
+    const std::string &file) {
+  DRACO_ASSIGN_OR_RETURN(const nlohmann::json json, ReadGltfJson(file));
+  const nlohmann::json &views = Member(json, "bufferViews");
+  const nlohmann::json &accessors = Member(json, "accessors");
+  std::vector<GltfDracoPrimitive> primitives;
+  std::set<int> seen_views;
+  const nlohmann::json &meshes = Member(json, "meshes");
+  for (size_t m = 0; m < meshes.size(); ++m) {
+    const nlohmann::json &mesh_primitives = Member(meshes[m], "primitives");
+    for (size_t p = 0; p < mesh_primitives.size(); ++p) {
+      const nlohmann::json &draco =
+          Member(Member(mesh_primitives[p], "extensions"),
+                 "KHR_draco_mesh_compression");
+      const int view = IntMember(draco, "bufferView", -1);
+      if (view < 0 || !seen_views.insert(view).second) {
+        continue;  // Not Draco-compressed, or a Draco buffer seen before.
+      }
+      if (static_cast<size_t>(view) >= views.size()) {
+        return ErrorStatus("Invalid Draco buffer view in " + file);
+      }
+      GltfDracoPrimitive primitive;
+      primitive.primitive = std::to_string(m) + "." + std::to_string(p);
+      primitive.draco_bytes = IntMember(views[view], "byteLength", 0);
+      const int tangent =
+          IntMember(Member(mesh_primitives[p], "attributes"), "TANGENT", -1);
+      if (tangent >= 0 && static_cast<size_t>(tangent) < accessors.size()) {
+        primitive.tangent_values = IntMember(accessors[tangent], "count", 0);
+      }
+      primitives.push_back(primitive);
+    }
+  }
+  return primitives;
+}
+
+Status TranscodeGltfFileWithoutTangents(
+    const std::string &input, const std::string &output,
+    const DracoCompressionOptions &options) {
+  DRACO_RETURN_IF_ERROR(options.Check());  // As DracoTranscoder::Create().
+  DRACO_ASSIGN_OR_RETURN(std::unique_ptr<Scene> scene,
+                         ReadSceneFromFile(input));
+  for (MeshIndex i(0); i < scene->NumMeshes(); ++i) {
+    Mesh &mesh = scene->GetMesh(i);
+    if (mesh.NumNamedAttributes(GeometryAttribute::TANGENT) == 0) {
+      continue;
+    }
+    while (mesh.NumNamedAttributes(GeometryAttribute::TANGENT) > 0) {
+      mesh.DeleteAttribute(
+          mesh.GetNamedAttributeId(GeometryAttribute::TANGENT));
+    }
+#ifdef DRACO_ATTRIBUTE_INDICES_DEDUPLICATION_SUPPORTED
+    mesh.DeduplicatePointIds();
+#endif
+  }
+  // What DracoTranscoder::Transcode() does after reading.
+  SceneUtils::SetDracoCompressionOptions(&options, scene.get());
+  GltfEncoder encoder;
+  return encoder.EncodeFile<Scene>(*scene, output);
+}
+
+namespace {
+
+// A transcoded file and, for an asset with tangents, the same without them.
+struct TranscodedVariant {
+  int64_t bytes = 0;
+  std::vector<GltfDracoPrimitive> primitives;
+  std::map<std::string, int64_t> draco_bytes_without_tangents;
+};
+
+bool HasTangents(const std::vector<GltfDracoPrimitive> &primitives) {
+  for (const GltfDracoPrimitive &primitive : primitives) {
+    if (primitive.tangent_values > 0) {
+      return true;
+    }
+  }
+  return false;
+}
+
+// Sizes of |file|, transcoded from |input| with |options|; with tangents
+// also transcodes |input| without them into |file_without_tangents|.
+StatusOr<TranscodedVariant> MeasureTranscoded(
+    const std::string &input, const std::string &file,
+    const std::string &file_without_tangents,
+    const DracoCompressionOptions &options) {
+  TranscodedVariant variant;
+  DRACO_ASSIGN_OR_RETURN(variant.bytes, TranscodedGltfBytes(file));
+  DRACO_ASSIGN_OR_RETURN(variant.primitives, ReadGltfDracoPrimitives(file));
+  if (!HasTangents(variant.primitives)) {
+    return variant;
+  }
+  DRACO_RETURN_IF_ERROR(
+      TranscodeGltfFileWithoutTangents(input, file_without_tangents, options));
+  DRACO_ASSIGN_OR_RETURN(const std::vector<GltfDracoPrimitive> without,
+                         ReadGltfDracoPrimitives(file_without_tangents));
+  for (const GltfDracoPrimitive &primitive : without) {
+    variant.draco_bytes_without_tangents[primitive.primitive] =
+        primitive.draco_bytes;
+  }
+  return variant;
+}
+
+int64_t DracoBytes(const TranscodedVariant &variant) {
+  int64_t bytes = 0;
+  for (const GltfDracoPrimitive &primitive : variant.primitives) {
+    bytes += primitive.draco_bytes;
+  }
+  return bytes;
+}
+
+// What each primitive's TANGENT costs in |variant| and in |stock|.
+StatusOr<std::vector<UvGltfTangentCost>> TangentCosts(
+    const TranscodedVariant &stock, const TranscodedVariant &variant) {
+  std::vector<UvGltfTangentCost> costs;
+  for (size_t i = 0; i < variant.primitives.size(); ++i) {
+    const GltfDracoPrimitive &primitive = variant.primitives[i];
+    if (primitive.tangent_values == 0) {
+      continue;
+    }
+    const auto without =
+        variant.draco_bytes_without_tangents.find(primitive.primitive);
+    const auto stock_without =
+        stock.draco_bytes_without_tangents.find(primitive.primitive);
+    if (i >= stock.primitives.size() ||
+        stock.primitives[i].primitive != primitive.primitive ||
+        without == variant.draco_bytes_without_tangents.end() ||
+        stock_without == stock.draco_bytes_without_tangents.end()) {
+      return ErrorStatus("Primitive " + primitive.primitive +
+                         " has no counterpart without tangents or in stock "
+                         "coding.");
+    }
+    UvGltfTangentCost cost;
+    cost.primitive = primitive.primitive;
+    cost.values = primitive.tangent_values;
+    cost.stock_bytes = stock.primitives[i].draco_bytes - stock_without->second;
+    cost.bytes = primitive.draco_bytes - without->second;
+    costs.push_back(cost);
+  }
+  return costs;
+}
+
+void AddTangentCosts(std::vector<UvGltfTangentCost> costs, UvGltfEvalRow *row) {
+  for (const UvGltfTangentCost &cost : costs) {
+    row->tangent_values += cost.values;
+    row->stock_tangent_bytes += cost.stock_bytes;
+    row->tangent_bytes += cost.bytes;
+  }
+  row->tangent_costs = std::move(costs);
+}
+
+// One folder per variant and the same file name in each, so that the
+// buffer and image names in the JSON have the same length.
+class VariantFiles {
+ public:
+  VariantFiles(const std::string &work_dir, const std::string &name, bool glb)
+      : work_dir_(work_dir),
+        file_name_(SafeFileName(name) + (glb ? ".glb" : ".gltf")) {}
+
+  std::string Path(const std::string &variant) const {
+    const fs::path dir = fs::path(work_dir_) / SafeFileName(variant);
+    fs::create_directories(dir);
+    return (dir / file_name_).string();
+  }
+
+ private:
+  std::string work_dir_;
+  std::string file_name_;
+};
+
+// The stock transcode every variant is compared with.
+struct StockReference {
+  std::unique_ptr<Scene> scene;
+  TranscodedVariant sizes;
+};
+
+StatusOr<StockReference> MeasureStock(const std::string &input,
+                                      const UvGltfEvalOptions &options,
+                                      const VariantFiles &files) {
+  DracoCompressionOptions stock_options = options.compression;
+  stock_options.uv = UvCompressionOptions();
+  const std::string file = files.Path("reference");
+  DRACO_RETURN_IF_ERROR(TranscodeGltfFile(input, file, stock_options));
+  StockReference stock;
+  auto scene = ReadSceneFromFile(file);
+  if (!scene.ok()) {
+    return ErrorStatus("Draco cannot read its own stock output: " +
+                       scene.status().error_msg_string());
+  }
+  stock.scene = std::move(scene).value();
+  DRACO_ASSIGN_OR_RETURN(
+      stock.sizes,
+      MeasureTranscoded(input, file, files.Path("reference_no_tangents"),
+                        stock_options));
+  return stock;
+}
+
+// Transcodes, reads back and measures one (scheme, tangents) variant into
+// |row|; a failure of the variant is the row's detail.
+Status MeasureVariant(const std::string &input, const StockReference &stock,
+                      const DracoCompressionOptions &options,
+                      const VariantFiles &files, UvGltfEvalRow *row) {
+  const std::string variant = row->scheme + "_" + row->tangents;
+  const std::string file = files.Path(variant);
+  const auto scene = TranscodeAndRead(input, file, options);
+  Status status = scene.status();
+  if (status.ok()) {
+    // The lossy Laplacians change the UVs by design.
+    status = CompareSceneGeometry(*stock.scene, *scene.value(),
+                                  !IsUvLaplacian(options.uv.prediction));
+  }
+  row->round_trip_ok = status.ok();
+  row->detail = status.ok() ? "" : status.error_msg_string();
+  if (!status.ok()) {
+    return OkStatus();
+  }
+  DRACO_ASSIGN_OR_RETURN(
+      const TranscodedVariant sizes,
+      MeasureTranscoded(input, file, files.Path(variant + "_no_tangents"),
+                        options));
+  row->bytes = sizes.bytes;
+  row->draco_bytes = DracoBytes(sizes);
+  DRACO_ASSIGN_OR_RETURN(row->requires_extension,
+                         RequiresUvGltfExtension(file));
+  DRACO_ASSIGN_OR_RETURN(std::vector<UvGltfTangentCost> costs,
+                         TangentCosts(stock.sizes, sizes));
+  AddTangentCosts(std::move(costs), row);
+  return OkStatus();
+}
+
+}  // namespace
+
 StatusOr<std::vector<UvGltfEvalRow>> EvaluateGltfAsset(
     const std::string &input, const std::string &name,
     const UvGltfEvalOptions &options, const std::string &work_dir) {
-  // One folder per variant and the same file name in each, so that the
-  // buffer and image names in the JSON have the same length.
-  const std::string file_name =
-      SafeFileName(name) + (options.glb ? ".glb" : ".gltf");
-  const auto output_path = [&](const std::string &variant) {
-    const fs::path dir = fs::path(work_dir) / SafeFileName(variant);
-    fs::create_directories(dir);
-    return (dir / file_name).string();
-  };
-
-  DracoCompressionOptions stock_options = options.compression;
-  stock_options.uv = UvCompressionOptions();
-  const std::string stock_file = output_path("reference");
-  DRACO_RETURN_IF_ERROR(TranscodeGltfFile(input, stock_file, stock_options));
-  const auto stock_scene = ReadSceneFromFile(stock_file);
-  if (!stock_scene.ok()) {
-    return ErrorStatus("Draco cannot read its own stock output: " +
-                       stock_scene.status().error_msg_string());
-  }
-  DRACO_ASSIGN_OR_RETURN(const int64_t stock_bytes,
-                         TranscodedGltfBytes(stock_file));
-
+  const VariantFiles files(work_dir, name, options.glb);
+  DRACO_ASSIGN_OR_RETURN(const StockReference stock,
+                         MeasureStock(input, options, files));
   std::vector<UvGltfEvalRow> rows;
   for (const std::string &scheme : options.schemes) {
-    UvGltfEvalRow row;
-    row.asset = name;
-    row.scheme = scheme;
-    row.primitives = stock_scene.value()->NumMeshes();
-    row.textured_primitives = CountTexturedMeshes(*stock_scene.value());
-    row.stock_bytes = stock_bytes;
-
-    DracoCompressionOptions scheme_options = options.compression;
-    DRACO_ASSIGN_OR_RETURN(scheme_options.uv, ParseUvSchemeName(scheme));
-    const std::string file = output_path(scheme);
-    const auto scene = TranscodeAndRead(input, file, scheme_options);
-    Status status = scene.status();
-    if (status.ok()) {
-      // The lossy Laplacians change the UVs by design.
-      status = CompareSceneGeometry(*stock_scene.value(), *scene.value(),
-                                    !IsUvLaplacian(scheme_options.uv.prediction));
+    for (const std::string &tangents : options.tangents) {
+      UvGltfEvalRow row;
+      row.asset = name;
+      row.scheme = scheme;
+      row.tangents = tangents;
+      row.qtg = options.compression.quantization_bits_tangent;
+      row.primitives = stock.scene->NumMeshes();
+      row.textured_primitives = CountTexturedMeshes(*stock.scene);
+      row.stock_bytes = stock.sizes.bytes;
+      row.stock_draco_bytes = DracoBytes(stock.sizes);
+      DracoCompressionOptions variant = options.compression;
+      DRACO_ASSIGN_OR_RETURN(variant.uv, ParseUvSchemeName(scheme));
+      DRACO_ASSIGN_OR_RETURN(variant.uv.tangent.prediction,
+                             ParseTangentPredictionName(tangents));
+      DRACO_RETURN_IF_ERROR(MeasureVariant(input, stock, variant, files, &row));
+      rows.push_back(std::move(row));
     }
-    if (status.ok()) {
-      DRACO_ASSIGN_OR_RETURN(row.bytes, TranscodedGltfBytes(file));
-      DRACO_ASSIGN_OR_RETURN(row.requires_extension,
-                             RequiresUvGltfExtension(file));
-    }
-    row.round_trip_ok = status.ok();
-    row.detail = status.ok() ? "" : status.error_msg_string();
-    rows.push_back(row);
   }
   return rows;
 }

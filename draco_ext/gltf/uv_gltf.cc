@@ -23,6 +23,7 @@
 
 #ifdef DRACO_TRANSCODER_SUPPORTED
 #include "draco/compression/draco_compression_options.h"
+#include "draco_ext/options/tangent_prediction_options.h"
 #include "draco_ext/options/uv_configure.h"
 #endif
 
@@ -81,39 +82,131 @@ Status KeepDracoUvOnlyIfItPaysForTheExtension(const Mesh &mesh,
 
 #ifdef DRACO_TRANSCODER_SUPPORTED
 
-Status ConfigureUvCompressionForGltf(
-    const Mesh &mesh, ExpertEncoder &encoder,
+namespace {
+
+// True when |encoder| codes an attribute of |mesh| with a draco-uv scheme
+// that |options| named rather than left to the encoder (-uv_pred auto or an
+// error target for TEX_COORD, -tangent_pred auto for tangents): the
+// primitive then needs the extension whatever its coders save.
+bool UsesNamedDracoUvScheme(const Mesh &mesh, const ExpertEncoder &encoder,
+                            const UvCompressionOptions &options) {
+  for (int att_id = 0; att_id < mesh.num_attributes(); ++att_id) {
+    const int method = encoder.options().GetAttributeInt(
+        att_id, "prediction_scheme", PREDICTION_UNDEFINED);
+    if (!IsDracoUvPredictionMethod(method)) {
+      continue;
+    }
+    const bool chosen =
+        mesh.attribute(att_id)->attribute_type() == GeometryAttribute::TEX_COORD
+            ? options.ChoosesPrediction()
+            : options.tangent.prediction == TangentPrediction::kAuto;
+    if (!chosen) {
+      return true;
+    }
+  }
+  return false;
+}
+
+// Sets |tangent| to stock prediction, saying why, when a tangent prediction
+// is asked for on a primitive whose tangents follow other texture
+// coordinates than the first TEX_COORD attribute of |mesh|.
+std::string KeepStockTangentsThatFollowOtherTexCoords(
+    const Mesh &mesh, const Material *material,
+    TangentCompressionOptions *tangent) {
+  const int follows = GltfTangentTexCoordSet(material);
+  const int predicted_from = GltfTexCoordSetOfFirstTexCoord(mesh);
+  if (tangent->prediction == TangentPrediction::kDraco ||
+      follows == predicted_from) {
+    return "";
+  }
+  tangent->prediction = TangentPrediction::kDraco;
+  std::string summary;
+  for (const int att_id : TangentAttributeIds(mesh)) {
+    summary += "Tangent prediction: " +
+               GeometryAttribute::TypeToString(
+                   mesh.attribute(att_id)->attribute_type()) +
+               " (attribute " + std::to_string(att_id) +
+               ") keeps stock coding: the material's normal texture uses "
+               "TEXCOORD_" +
+               std::to_string(follows) + ", the prediction reads TEXCOORD_" +
+               std::to_string(predicted_from) + "\n";
+  }
+  return summary;
+}
+
+}  // namespace
+
+int GltfTangentTexCoordSet(const Material *material) {
+  const TextureMap *const normal_map =
+      material == nullptr
+          ? nullptr
+          : material->GetTextureMapByType(TextureMap::NORMAL_TANGENT_SPACE);
+  return normal_map == nullptr ? 0 : normal_map->tex_coord_index();
+}
+
+int GltfTexCoordSetOfFirstTexCoord(const Mesh &mesh) {
+  const int att_id = mesh.GetNamedAttributeId(GeometryAttribute::TEX_COORD);
+  const AttributeMetadata *const metadata =
+      att_id < 0 ? nullptr : mesh.GetAttributeMetadataByAttributeId(att_id);
+  std::string name;
+  return metadata != nullptr &&
+                 metadata->GetEntryString("attribute_name", &name) &&
+                 name == "TEXCOORD_1"
+             ? 1
+             : 0;
+}
+
+StatusOr<std::string> ConfigureUvCompressionForGltfPrimitive(
+    const Mesh &mesh, const Material *material, ExpertEncoder *encoder,
     std::set<std::string> *extensions_used,
     std::set<std::string> *extensions_required) {
-  const UvCompressionOptions &options = mesh.GetCompressionOptions().uv;
+  UvCompressionOptions options = mesh.GetCompressionOptions().uv;
+  std::string summary = KeepStockTangentsThatFollowOtherTexCoords(
+      mesh, material, &options.tangent);
   // Checks the options even when they are stock, like every entry point;
-  // stock options leave the encoder untouched. The per-attribute summaries
-  // are for command-line tools; a library stays quiet.
-  DRACO_RETURN_IF_ERROR(
-      ConfigureUvCompression(options, &mesh, &encoder).status());
-  if ((options.ChoosesPrediction() ||
-       options.tangent.prediction == TangentPrediction::kAuto) &&
-      extensions_required->count(kUvGltfExtension) == 0) {
+  // stock options leave the encoder untouched.
+  DRACO_ASSIGN_OR_RETURN(const std::string configured,
+                         ConfigureUvCompression(options, &mesh, encoder));
+  summary += configured;
+  if (extensions_required->count(kUvGltfExtension) == 0 &&
+      UsesDracoUvScheme(mesh, *encoder) &&
+      !UsesNamedDracoUvScheme(mesh, *encoder, options)) {
     DRACO_RETURN_IF_ERROR(
-        KeepDracoUvOnlyIfItPaysForTheExtension(mesh, &encoder));
+        KeepDracoUvOnlyIfItPaysForTheExtension(mesh, encoder));
+    if (!UsesDracoUvScheme(mesh, *encoder)) {
+      summary += std::string(
+                     "Prediction (auto): draco for every attribute "
+                     "(draco-uv's saving does not pay for ") +
+                 kUvGltfExtension + ")\n";
+    }
   }
-  if (UsesDracoUvScheme(mesh, encoder) ||
-      GetUvSeamCoding(encoder.options()) != UvSeamCoding::kDraco) {
+  if (UsesDracoUvScheme(mesh, *encoder) ||
+      GetUvSeamCoding(encoder->options()) != UvSeamCoding::kDraco) {
     extensions_used->insert(kUvGltfExtension);
     extensions_required->insert(kUvGltfExtension);
   }
-  return OkStatus();
+  return summary;
 }
 
 Status ConfigureUvCompressionForGltf(
-    const Mesh &mesh, const std::unique_ptr<ExpertEncoder> &encoder,
+    const Mesh &mesh, const Material *material, ExpertEncoder &encoder,
+    std::set<std::string> *extensions_used,
+    std::set<std::string> *extensions_required) {
+  return ConfigureUvCompressionForGltfPrimitive(
+             mesh, material, &encoder, extensions_used, extensions_required)
+      .status();
+}
+
+Status ConfigureUvCompressionForGltf(
+    const Mesh &mesh, const Material *material,
+    const std::unique_ptr<ExpertEncoder> &encoder,
     std::set<std::string> *extensions_used,
     std::set<std::string> *extensions_required) {
   if (encoder == nullptr) {
     return ErrorStatus("No encoder for the glTF primitive.");
   }
-  return ConfigureUvCompressionForGltf(mesh, *encoder, extensions_used,
-                                       extensions_required);
+  return ConfigureUvCompressionForGltf(mesh, material, *encoder,
+                                       extensions_used, extensions_required);
 }
 
 #endif  // DRACO_TRANSCODER_SUPPORTED

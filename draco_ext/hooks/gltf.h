@@ -14,7 +14,8 @@
 //
 // What Draco's glTF encoder (patches/0009) and decoder (patches/0010) call:
 // ConfigureUvCompressionForGltf() applies a primitive's UvCompressionOptions
-// and marks the file with draco-uv's glTF extension where needed;
+// (its material tells which texture coordinates its tangents follow) and
+// marks the file with draco-uv's glTF extension where needed;
 // IsUvGltfExtension() lets the decoder accept that extension.
 #ifndef DRACO_EXT_HOOKS_GLTF_H_
 #define DRACO_EXT_HOOKS_GLTF_H_

@@ -26,8 +26,9 @@ namespace {
 // Up to this many edits (insertion, deletion, substitution or swap of two
 // neighbours, after normalising: see Normalised()) from a flag of the table
 // an unknown flag counts as a misspelling of it: "uv_pred" and "uvpred" are
-// one edit apart, "uv_prde" one, "uv_pd" two, and no flag of stock Draco's
-// tools is within two edits of a flag of ours.
+// one edit apart, "uv_prde" one, "uv_pd" two. The flags of the table that
+// carry stock Draco's names (-qtg) take no part: no flag of stock Draco's
+// tools is within two edits of the others.
 constexpr size_t kNearMiss = 2;
 // Up to this many edits a flag of the family is suggested as the one meant.
 constexpr size_t kSuggestion = 3;
@@ -108,7 +109,7 @@ const std::vector<const char *> &DracoUvFlagNames() {
       "-uv_texture_size",  // texels of -uv_texels' texture
       "-uv_seams",         // attribute seam coding
       "-tangent_pred",     // tangent prediction scheme
-      "-tangent_bits",     // tangent quantization
+      "-qtg",              // tangent quantization (draco_encoder)
   };
   return flags;
 }
@@ -116,6 +117,11 @@ const std::vector<const char *> &DracoUvFlagNames() {
 const std::vector<const char *> &DracoUvFlagFamilies() {
   static const std::vector<const char *> families = {"-uv_", "-tangent_"};
   return families;
+}
+
+bool IsStockToolValueFlag(const std::string &arg) {
+  return std::any_of(std::begin(kStockValueFlags), std::end(kStockValueFlags),
+                     [&arg](const char *flag) { return arg == flag; });
 }
 
 UnhandledToolArg ClassifyUnhandledToolArg(
@@ -127,7 +133,7 @@ UnhandledToolArg ClassifyUnhandledToolArg(
     return result;  // A value, a file name, "-": stock Draco skips it.
   }
   for (const char *flag : known_flags) {
-    if (arg == flag) {
+    if (arg == flag && !IsStockToolValueFlag(arg)) {
       // The table has it, the tool has no branch for it.
       result.kind = UnhandledToolArg::kError;
       result.message = arg + " is not a flag of " +
@@ -146,6 +152,9 @@ UnhandledToolArg ClassifyUnhandledToolArg(
   const char *best = nullptr;
   const char *completion = nullptr;  // First flag that |name| begins.
   for (const char *flag : known_flags) {
+    if (IsStockToolValueFlag(flag)) {
+      continue;  // A stock name: its look-alikes are stock's flags.
+    }
     const std::string known = Normalised(flag);
     // The distance is at least the difference in length: skip long args.
     const size_t length_gap = std::max(name.size(), known.size()) -
@@ -164,10 +173,7 @@ UnhandledToolArg ClassifyUnhandledToolArg(
   }
   if (family_prefix == 0 && best_distance > kNearMiss) {
     result.kind = UnhandledToolArg::kWarn;
-    const bool stock_value_flag =
-        std::any_of(std::begin(kStockValueFlags), std::end(kStockValueFlags),
-                    [&arg](const char *flag) { return arg == flag; });
-    result.message = is_last && stock_value_flag
+    result.message = is_last && IsStockToolValueFlag(arg)
                          ? "ignoring " + arg + ": no value follows it"
                          : "ignoring unknown flag " + arg;
     return result;

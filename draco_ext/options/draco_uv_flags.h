@@ -47,6 +47,12 @@ const std::vector<const char *> &DracoUvFlagNames();
 // that name, so that a flag of a newer or other build is an error here.
 const std::vector<const char *> &DracoUvFlagFamilies();
 
+// True for the flags of stock Draco's tools that take a value (-qp, -cl,
+// ...). -qtg is one (draco_transcoder's own) and also draco-uv's in
+// draco_encoder: the stock -q flags a letter from it are not its typos, and
+// at the end of a command line it is skipped with a warning like them.
+bool IsStockToolValueFlag(const std::string &arg);
+
 // What a tool does with an argument that none of its flags took.
 struct UnhandledToolArg {
   enum Kind {

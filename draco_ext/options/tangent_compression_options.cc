@@ -25,7 +25,7 @@ namespace draco {
 namespace {
 
 constexpr char kPredictionFlag[] = "-tangent_pred";
-constexpr char kBitsFlag[] = "-tangent_bits";
+constexpr char kBitsFlag[] = "-qtg";
 
 }  // namespace
 
@@ -129,19 +129,25 @@ Status ParseTangentCompressionFlag(const std::string &flag,
 std::string TangentCompressionUsage() {
   std::string lines =
       "  -tangent_pred <name>  prediction of tangent attributes (glTF "
-      "TANGENT;\n"
-      "                          needs -cl 5..10, quantized normals and "
-      "UVs):\n";
+      "TANGENT) from the\n"
+      "                          positions, normals and first UV set "
+      "(glTF: TEXCOORD_0,\n"
+      "                          which the normal texture must use); needs "
+      "-cl 5..10,\n"
+      "                          quantized normals and losslessly coded "
+      "UVs:\n";
   for (const TangentPredictionName &entry : TangentPredictionNames()) {
     std::string line = "                          " + std::string(entry.name);
     line.resize(std::max<size_t>(line.size() + 1, 48), ' ');
     lines += line + entry.description + "\n";
   }
   return lines +
-         "  -tangent_bits <bits>  quantization of tangent attributes "
-         "(default with\n"
-         "                          -tangent_pred: 8, like "
-         "draco_transcoder)\n";
+         "  -qtg <bits>           draco_encoder: quantization of tangent "
+         "attributes\n"
+         "                          (default with -tangent_pred: 8); "
+         "draco_transcoder's\n"
+         "                          own -qtg does the same for glTF TANGENT "
+         "(default 8)\n";
 }
 
 }  // namespace draco

@@ -14,7 +14,7 @@
 //
 // TangentCompressionOptions: how draco-uv codes a mesh's tangents (glTF
 // TANGENT: xyz a unit vector, w = +1 or -1), typed, parsed once from a
-// command line (-tangent_pred, -tangent_bits) or set from C++,
+// command line (-tangent_pred, and -qtg in draco_encoder) or set from C++,
 // carried by UvCompressionOptions::tangent and applied with the rest by
 // ConfigureUvCompression() (uv_configure.h). Default-constructed it changes
 // nothing.
@@ -31,11 +31,10 @@
 //                         three the encoder finds smallest
 //     auto                geometric where it is smaller than stock Draco's
 //                         coding, else stock; never bigger
-//   -tangent_bits <bits>  quantisation of tangent attributes (draco_encoder
-//                         has no other; in draco_transcoder it overrides
-//                         -qtg); the tangent names quantise with 8 bits, as
-//                         draco_transcoder does, where nothing else set
-//                         them.
+//   -qtg <bits>           draco_encoder: quantisation of tangent attributes
+//                         (draco_transcoder has its own -qtg); the tangent
+//                         names quantise with 8 bits, as draco_transcoder
+//                         does, where nothing else set them.
 #ifndef DRACO_EXT_OPTIONS_TANGENT_COMPRESSION_OPTIONS_H_
 #define DRACO_EXT_OPTIONS_TANGENT_COMPRESSION_OPTIONS_H_
 
@@ -65,7 +64,7 @@ struct TangentCompressionOptions {
   static constexpr int kMaxQuantizationBits = 21;
 
   TangentPrediction prediction = TangentPrediction::kDraco;
-  // -tangent_bits: quantisation of tangent attributes.
+  // -qtg of draco_encoder: quantisation of tangent attributes.
   std::optional<int> quantization_bits;
 
   bool IsStock() const {
@@ -100,10 +99,10 @@ StatusOr<TangentPrediction> ParseTangentPredictionName(
 // (a mask of GeometricTangentKindBit()); 0 for kDraco.
 uint8_t GeometricTangentKindsOf(TangentPrediction prediction);
 
-// -tangent_bits must be 1 to kMaxQuantizationBits.
+// -qtg must be 1 to kMaxQuantizationBits.
 Status CheckTangentCompressionOptions(const TangentCompressionOptions &options);
 
-// The flags (-tangent_pred, -tangent_bits) and their parsing, as
+// The flags (-tangent_pred, -qtg) and their parsing, as
 // UvCompressionOptions' flag parser hands them on.
 bool IsTangentCompressionFlag(const char *arg);
 Status ParseTangentCompressionFlag(const std::string &flag,

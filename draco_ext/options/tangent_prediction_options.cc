@@ -20,6 +20,7 @@
 #include "draco/core/encoder_buffer.h"
 #include "draco/draco_features.h"
 #include "draco_ext/options/uv_compression_options.h"
+#include "prediction_schemes/tangent/geometric_tangent_coder.h"
 #include "prediction_schemes/tangent/geometric_tangent_settings.h"
 #include "prediction_schemes/tangent/mesh_prediction_scheme_geometric_tangent_encoder.h"
 

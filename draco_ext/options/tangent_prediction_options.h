@@ -67,7 +67,7 @@ Status CheckTangentValues(const TangentCompressionOptions &options,
 // sets MESH_PREDICTION_GEOMETRIC_TANGENT where WhyNoGeometricTangent-
 // Prediction() finds nothing against it, else keeps stock coding and says
 // why. kAuto also keeps stock coding where the geometric file is not
-// smaller (one trial encode each). kDraco without -tangent_bits leaves |encoder|
+// smaller (one trial encode each). kDraco with no -qtg leaves |encoder|
 // untouched. Returns a summary line per tangent attribute ("" when nothing
 // changed); fails on a point cloud and on tangents with NaN or infinite
 // values, which Draco's quantization cannot code either.

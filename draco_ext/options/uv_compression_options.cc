@@ -297,6 +297,12 @@ Status ParseUvCompressionFlag(int argc, char **argv, int *index,
                               UvCompressionOptions *options) {
   const std::string flag = argv[*index];
   if (*index + 1 >= argc) {
+    // -qtg has stock draco_transcoder's name: at the end of the command line
+    // it is skipped with the warning of stock's -qp there.
+    if (IsStockToolValueFlag(flag) &&
+        CheckUnhandledToolArg(argc, argv, *index)) {
+      return OkStatus();
+    }
     return ErrorStatus(flag + " needs a value.");
   }
   const std::string value = argv[++*index];
@@ -350,6 +356,69 @@ std::string UvCompressionUsage() {
 }
 
 #ifdef DRACO_TRANSCODER_SUPPORTED
+namespace {
+
+// The flag that asks for draco-uv's coding in |uv|, for messages.
+const char *FirstNonStockFlag(const UvCompressionOptions &uv) {
+  return uv.prediction != UvPrediction::kDraco ? kPredictionFlag
+         : uv.seams != UvSeamCoding::kDraco    ? kSeamsFlag
+         : uv.MaxUvRmse().has_value()          ? kRmseFlag
+                                               : "-tangent_pred";
+}
+
+// -tangent_pred in glTF options: tangents are quantized by
+// quantization_bits_tangent (draco_transcoder's -qtg), and a named
+// prediction must be possible on every primitive the options allow.
+Status CheckTangentOptions(const DracoCompressionOptions &options) {
+  const UvCompressionOptions &uv = options.uv;
+  if (uv.tangent.quantization_bits.has_value()) {
+    return ErrorStatus(
+        "-qtg of draco_encoder (UvCompressionOptions::tangent."
+        "quantization_bits) does not apply to glTF: tangents take "
+        "DracoCompressionOptions::quantization_bits_tangent "
+        "(draco_transcoder's -qtg).");
+  }
+  if (uv.tangent.prediction == TangentPrediction::kDraco) {
+    return OkStatus();
+  }
+  if (options.quantization_bits_tangent < 1 ||
+      options.quantization_bits_tangent >
+          TangentCompressionOptions::kMaxQuantizationBits) {
+    return ErrorStatus(
+        "-tangent_pred needs quantized tangents: -qtg 1 to " +
+        std::to_string(TangentCompressionOptions::kMaxQuantizationBits) + ".");
+  }
+  if (uv.tangent.prediction == TangentPrediction::kAuto) {
+    return OkStatus();  // Keeps stock coding where it cannot predict.
+  }
+  const std::string flag = std::string("-tangent_pred ") +
+                           TangentPredictionNameOf(uv.tangent.prediction);
+  if (options.compression_level < 5) {
+    return ErrorStatus(flag +
+                       " needs compression level 5 or more (below, Draco "
+                       "splits meshes on attribute seams).");
+  }
+  if (options.quantization_position.AreQuantizationBitsDefined() &&
+      options.quantization_position.quantization_bits() < 1) {
+    return ErrorStatus(flag + " needs quantized positions.");
+  }
+  if (options.quantization_bits_normal < 1) {
+    return ErrorStatus(flag + " needs quantized normals.");
+  }
+  if (options.quantization_bits_tex_coord < 1 && !uv.MaxUvRmse().has_value()) {
+    return ErrorStatus(flag + " needs quantized texture coordinates.");
+  }
+  if (IsUvLaplacian(uv.prediction)) {
+    return ErrorStatus(flag +
+                       " needs losslessly coded texture coordinates, not "
+                       "-uv_pred " +
+                       UvPredictionNameOf(uv.prediction) + ".");
+  }
+  return OkStatus();
+}
+
+}  // namespace
+
 Status CheckUvCompressionOptions(const DracoCompressionOptions &options) {
   const UvCompressionOptions &uv = options.uv;
   DRACO_RETURN_IF_ERROR(CheckUvCompressionOptions(uv));
@@ -357,13 +426,11 @@ Status CheckUvCompressionOptions(const DracoCompressionOptions &options) {
     return OkStatus();
   }
   if (options.compression_level < 1) {
-    return ErrorStatus(
-        std::string(uv.prediction != UvPrediction::kDraco ? kPredictionFlag
-                    : uv.seams != UvSeamCoding::kDraco    ? kSeamsFlag
-                                                          : kRmseFlag) +
-        " needs Edgebreaker encoding: compression level 1 or "
-        "more.");
+    return ErrorStatus(std::string(FirstNonStockFlag(uv)) +
+                       " needs Edgebreaker encoding: compression level 1 or "
+                       "more.");
   }
+  DRACO_RETURN_IF_ERROR(CheckTangentOptions(options));
   if (uv.prediction == UvPrediction::kDraco) {
     return OkStatus();
   }

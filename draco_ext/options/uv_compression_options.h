@@ -43,7 +43,7 @@
 //                       (eq. 9, UV units) is at most R (uv_error_target.h)
 //   -uv_texels T        the same target as RMSE T / N, in texels of a
 //   -uv_texture_size N  texture of N texels (default 4096)
-//   -tangent_pred, -tangent_bits  the mesh's tangents (TangentCompressionOptions,
+//   -tangent_pred, -qtg the mesh's tangents (TangentCompressionOptions,
 //                       tangent_compression_options.h)
 //
 // Draco's compression options header includes this one (patches/0008), so

@@ -13,7 +13,8 @@
 // limitations under the License.
 //
 // draco_uv_eval: how much each UV coder saves on a mesh or a folder of
-// meshes, in the terms of [Váša & Brunnett 2014] section 6.
+// meshes, in the terms of [Váša & Brunnett 2014] section 6, and on meshes
+// with tangents what each tangent coder saves.
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
@@ -36,6 +37,7 @@ struct Args {
   std::string input;
   draco::UvEvalOptions options;
   std::string csv;
+  std::string tangent_csv;
   std::string plot;
   bool progress = true;
   std::vector<double> texels;  // --texels, in texels of --texture_size.
@@ -63,6 +65,16 @@ void Usage() {
       "random:K\n"
       "                   or random:P%), default: greedy, 0.65% of the\n"
       "                   texture coordinates + 6% of the boundary ones\n"
+      "  --tangents LIST  -tangent_pred names measured with every scheme on\n"
+      "                   meshes with tangents (glTF TANGENT), default\n"
+      "                   draco,auto (draco: the scheme alone). Tangent bytes\n"
+      "                   are size with minus without the tangents, same\n"
+      "                   flags; bits per tangent value are 8 x those bytes /\n"
+      "                   the mesh's points (one TANGENT value each, as glTF\n"
+      "                   stores them per vertex); ratios are to stock Draco\n"
+      "                   at the same qt and qtg; the round trip checks the\n"
+      "                   decoded tangents against stock coding's\n"
+      "  --qtg LIST       tangent quantization bits (-qtg), default 8\n"
       "  --rmse LIST      error targets (RMSE, UV units): one row each, "
       "scheme\n"
       "                   rmse, of what draco_encoder -uv_rmse R writes\n"
@@ -70,10 +82,27 @@ void Usage() {
       "  --texture_size N texels of that texture, default 4096\n"
       "  --repeat N       timing runs (minimum reported), default 3\n"
       "  --csv FILE       one row per (mesh, scheme, qt)\n"
+      "  --tangent_csv FILE  one row per (mesh, scheme, tangents, qt, qtg)\n"
       "  --plot FILE      rate-distortion chart (PNG or SVG, needs python3 "
       "with matplotlib)\n"
       "  --quiet          no progress on stderr\n",
       stdout);
+}
+
+// A comma-separated list of quantization bits, 1 to 30.
+bool ParseBitsList(const std::string &flag, const std::string &list,
+                   std::vector<int> *values) {
+  values->clear();
+  for (const std::string &item : draco::SplitUvToolList(list)) {
+    int bits;
+    if (!draco::ParseUvToolInt(item, 1, 30, &bits)) {
+      fprintf(stderr, "Error: bad %s value '%s'.\n", flag.c_str(),
+              item.c_str());
+      return false;
+    }
+    values->push_back(bits);
+  }
+  return true;
 }
 
 bool ParseArgs(int argc, char **argv, Args *args) {
@@ -87,15 +116,11 @@ bool ParseArgs(int argc, char **argv, Args *args) {
     } else if (!has_value && flag.rfind("--", 0) == 0) {
       fprintf(stderr, "Error: %s needs a value.\n", flag.c_str());
       return false;
-    } else if (flag == "--qt") {
-      args->options.qt.clear();
-      for (const std::string &item : draco::SplitUvToolList(argv[++i])) {
-        int qt;
-        if (!draco::ParseUvToolInt(item, 1, 30, &qt)) {
-          fprintf(stderr, "Error: bad --qt value '%s'.\n", item.c_str());
-          return false;
-        }
-        args->options.qt.push_back(qt);
+    } else if (flag == "--qt" || flag == "--qtg") {
+      if (!ParseBitsList(
+              flag, argv[++i],
+              flag == "--qt" ? &args->options.qt : &args->options.qtg)) {
+        return false;
       }
     } else if (flag == "--qp" || flag == "--cl" || flag == "--repeat") {
       int *target = flag == "--qp"   ? &args->options.qp
@@ -109,6 +134,8 @@ bool ParseArgs(int argc, char **argv, Args *args) {
       args->options.schemes = draco::SplitUvToolList(argv[++i]);
     } else if (flag == "--seams") {
       args->options.seams = draco::SplitUvToolList(argv[++i]);
+    } else if (flag == "--tangents") {
+      args->options.tangents = draco::SplitUvToolList(argv[++i]);
     } else if (flag == "--uv_anchors") {
       const auto anchors = draco::ParseUvAnchorSpec(argv[++i]);
       if (!anchors.ok()) {
@@ -133,6 +160,8 @@ bool ParseArgs(int argc, char **argv, Args *args) {
       }
     } else if (flag == "--csv") {
       args->csv = argv[++i];
+    } else if (flag == "--tangent_csv") {
+      args->tangent_csv = argv[++i];
     } else if (flag == "--plot") {
       args->plot = argv[++i];
     } else if (args->input.empty() && flag.rfind("-", 0) != 0) {
@@ -149,7 +178,8 @@ bool ParseArgs(int argc, char **argv, Args *args) {
     args->options.rmse_targets.push_back(*target.MaxUvRmse());
   }
   return !args->input.empty() && !args->options.qt.empty() &&
-         !args->options.schemes.empty() && !args->options.seams.empty();
+         !args->options.schemes.empty() && !args->options.seams.empty() &&
+         !args->options.tangents.empty() && !args->options.qtg.empty();
 }
 
 }  // namespace
@@ -187,17 +217,30 @@ int main(int argc, char **argv) {
       continue;
     }
     auto rows = draco::EvaluateMesh(name, *mesh.value(), args.options);
-    if (!rows.ok()) {
-      fprintf(stderr, "Error: %s\n", rows.status().error_msg());
+    auto tangent_rows =
+        rows.ok()
+            ? draco::EvaluateMeshTangents(name, *mesh.value(), args.options)
+            : draco::StatusOr<std::vector<draco::TangentEvalRow>>(
+                  rows.status());
+    if (!tangent_rows.ok()) {
+      fprintf(stderr, "Error: %s\n", tangent_rows.status().error_msg());
       ++failures;
       continue;
     }
     report.Add(rows.value());
+    report.AddTangents(tangent_rows.value());
     printf("%s\n", draco::FormatMeshTable(rows.value()).c_str());
+    if (!tangent_rows.value().empty()) {
+      printf("%s\n", draco::FormatTangentTable(tangent_rows.value()).c_str());
+    }
   }
   printf("%s", report.FormatSummary().c_str());
   if (!args.csv.empty() && !report.WriteCsv(args.csv)) {
     fprintf(stderr, "Error: cannot write %s\n", args.csv.c_str());
+    return 1;
+  }
+  if (!args.tangent_csv.empty() && !report.WriteTangentCsv(args.tangent_csv)) {
+    fprintf(stderr, "Error: cannot write %s\n", args.tangent_csv.c_str());
     return 1;
   }
   if (!args.plot.empty() && !report.WritePlot(args.plot)) {
@@ -205,7 +248,8 @@ int main(int argc, char **argv) {
     return 1;
   }
   if (!report.AllRoundTripsOk()) {
-    fprintf(stderr, "Error: a round trip did not reproduce the UVs.\n");
+    fprintf(stderr,
+            "Error: a round trip did not reproduce the UVs or tangents.\n");
     return 2;
   }
   return failures == 0 ? 0 : 1;

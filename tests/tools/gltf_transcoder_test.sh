@@ -24,7 +24,7 @@ set -uo pipefail
 our_transcoder=$1 our_encoder=$2 our_uv_eval=$3 draco_testdata=$4
 stock_transcoder=/usr/bin/draco_transcoder stock_encoder=/usr/bin/draco_encoder
 gltf_json="$(dirname "$0")/gltf_json.py"
-extension=DRACOUV_texcoord_compression
+extension=DRACOUV_attribute_compression
 for tool in "${stock_transcoder}" "${stock_encoder}"; do
   [[ -x "${tool}" ]] || { echo "missing ${tool} (apt-get install draco)"; exit 1; }
 done

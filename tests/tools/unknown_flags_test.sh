@@ -10,7 +10,8 @@
 #     value, and the output is byte-identical to the run without it.
 #  3. Every stock flag of the tool, with its value, prints no warning, and
 #     the output is byte-identical to Debian's stock tool's; draco-uv's own
-#     flags print no warning either.
+#     flags print no warning either (-qtg is draco_transcoder's own flag and
+#     draco_encoder's of draco-uv; the stock -q flags near it stay stock's).
 #
 #   unknown_flags_test.sh OUR_ENCODER OUR_TRANSCODER OBJ_MESH GLTF_ASSET
 set -uo pipefail
@@ -81,11 +82,11 @@ declare -A stock_flags_of=(
   [encoder]="-qp 12 -qt 11 -qn 9 -qg 7 -cl 8 --skip GENERIC --metadata -preserve_polygons"
   [transcoder]="-qp 12 -qt 11 -qn 9 -qc 7 -qtg 7 -qw 7 -qg 7")
 # Stock flags of the other tool: unknown here.
-declare -A other_flags_of=([encoder]="-qtg 7" [transcoder]="-cl 7")
+declare -A other_flags_of=([encoder]="-qw 7" [transcoder]="-cl 7")
 # draco-uv flags of this build that the tool takes.
 declare -A uv_flags_of=(
-  [encoder]="-cl 10 -uv_pred auto -uv_seams context"
-  [transcoder]="-uv_pred weighted -uv_seams context")
+  [encoder]="-cl 10 -uv_pred auto -uv_seams context -tangent_pred auto -qtg 10"
+  [transcoder]="-uv_pred weighted -uv_seams context -tangent_pred auto")
 
 for name in "${tools[@]}"; do
   tool=${tool_of[${name}]} input=${input_of[${name}]} ext=${ext_of[${name}]}
@@ -132,6 +133,9 @@ Warning: ignoring unknown flag -pred" -x -pred auto
   # a warning.
   expect_warnings "${name}_missing_value" "${tool}" "${input}" "${out}" \
     "${ref}" "Warning: ignoring -qp: no value follows it" -qp
+  # -qtg has stock draco_transcoder's name: the same in both tools.
+  expect_warnings "${name}_qtg_missing_value" "${tool}" "${input}" "${out}" \
+    "${ref}" "Warning: ignoring -qtg: no value follows it" -qtg
 
   # 1. Misspelt draco-uv flags: an error, no file.
   for case in "-uv_prd|-uv_pred" "-uvpred|-uv_pred" "--uv_pred|-uv_pred" \
@@ -149,8 +153,8 @@ Warning: ignoring unknown flag -pred" -x -pred auto
     "unknown flag -uv_pred=auto; did you mean -uv_pred auto?" -uv_pred=auto
   expect_error "${name}_after_foo" "${tool}" "${input}" "${out}" \
     "unknown flag -uv_prd; did you mean -uv_pred?" -foo -uv_prd auto
-  # A flag of a family this build has no flag of: still an error.
-  for flag in -tangent_quality -tangent_prd --tangent_pred -uv_quality; do
+  # A flag of a family that this build lacks, or a near miss: an error.
+  for flag in -tangent_kinds -tangent_prd --tangent_pred -uv_quality; do
     run "${name}_family" "${tool}" "${input}" "${out}" "${flag}" auto
     [[ $(status "${name}_family") -ne 0 ]] || fail "${name} ${flag}: exit 0"
     grep -q "^Error: unknown flag ${flag}; " "${work}/${name}_family.err" ||
@@ -160,4 +164,4 @@ Warning: ignoring unknown flag -pred" -x -pred auto
 done
 
 echo "tool runs: ${checks}; failures: ${failures}"
-[[ ${checks} -ge 52 && ${failures} -eq 0 ]]
+[[ ${checks} -ge 54 && ${failures} -eq 0 ]]

@@ -20,7 +20,7 @@ our_encoder=$1 our_decoder=$2 our_transcoder=$3 draco_testdata=$4
 stock_encoder=/usr/bin/draco_encoder stock_decoder=/usr/bin/draco_decoder
 stock_transcoder=/usr/bin/draco_transcoder
 gltf_json="$(dirname "$0")/gltf_json.py"
-extension=DRACOUV_texcoord_compression
+extension=DRACOUV_attribute_compression
 for tool in "${stock_encoder}" "${stock_decoder}" "${stock_transcoder}"; do
   [[ -x "${tool}" ]] || { echo "missing ${tool} (apt-get install draco)"; exit 1; }
 done

@@ -25,7 +25,7 @@ import crypto from 'node:crypto';
 import fs from 'node:fs';
 import path from 'node:path';
 
-export const MARKER = 'DRACOUV_texcoord_compression';
+export const MARKER = 'DRACOUV_attribute_compression';
 // What the marker adds to a GLB's JSON chunk at most: its name in two lists,
 // quoted with a comma, plus the chunk's padding to 4 bytes.
 export const MARKER_JSON_BYTES = 2 * (MARKER.length + 3) + 3;

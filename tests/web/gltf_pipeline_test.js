@@ -23,7 +23,7 @@
  * the package's decoder (gltf-transform.mjs):
  *  - the triangles (every attribute) equal the reference's exactly, and the
  *    reference's equal plain gltf-pipeline's;
- *  - DRACOUV_texcoord_compression is in extensionsUsed and
+ *  - DRACOUV_attribute_compression is in extensionsUsed and
  *    extensionsRequired exactly when npm draco3d's decoder fails on some
  *    Draco buffer; never without texCoordCompression (nor in plain
  *    gltf-pipeline's output), never for Box; with weighted_multi and auto +
@@ -61,14 +61,15 @@ async function main(checks) {
          hasMarker, parseGlb} = checks;
   const {NodeIO} = await import('@gltf-transform/core');
   const {KHRDracoMeshCompression} = await import('@gltf-transform/extensions');
-  const {registerDracoUv, DracoUvTexcoordCompression} =
+  const {registerDracoUv, DracoUvAttributeCompression} =
     await import('draco3d-uv/gltf-transform');
   const npmDecoder = await require('draco3d').createDecoderModule({});
   const plainPipeline = require('gltf-pipeline');
   const ours = require('draco3d-uv/gltf-pipeline');
   const ourIO = await registerDracoUv(new NodeIO());
   const npmIO = new NodeIO()
-      .registerExtensions([KHRDracoMeshCompression, DracoUvTexcoordCompression])
+      .registerExtensions(
+          [KHRDracoMeshCompression, DracoUvAttributeCompression])
       .registerDependencies({'draco3d.decoder': npmDecoder});
 
   const settings = [

@@ -24,7 +24,7 @@
  *  - the GLB reads back with the package's decoder to the reference's
  *    triangles exactly (every attribute; lossless coders, same
  *    quantisation); npm draco3d's encoder writes the reference's bytes;
- *  - DRACOUV_texcoord_compression is in extensionsUsed and
+ *  - DRACOUV_attribute_compression is in extensionsUsed and
  *    extensionsRequired exactly when npm draco3d's decoder fails on some
  *    Draco buffer of the file; never without texture coordinate options,
  *    never for Box (no TEXCOORD); with weighted_multi and auto + context
@@ -80,7 +80,7 @@ const {KHRDracoMeshCompression} = await import('@gltf-transform/extensions');
 const {draco} = await import('@gltf-transform/functions');
 const {default: npmDraco} = await import('draco3d');
 const {default: ourDraco} = await import('draco3d-uv');
-const {registerDracoUv, DracoUvTexcoordCompression} =
+const {registerDracoUv, DracoUvAttributeCompression} =
   await import('draco3d-uv/gltf-transform');
 
 const work = fs.mkdtempSync(path.join(os.tmpdir(), 'gltf-transform-test-'));
@@ -401,7 +401,7 @@ async function main() {
     ourIO: await registerDracoUv(new NodeIO()),
     npmIO: new NodeIO()
         .registerExtensions([KHRDracoMeshCompression,
-                             DracoUvTexcoordCompression])
+                             DracoUvAttributeCompression])
         .registerDependencies({'draco3d.decoder': npmDecoder}),
     plainIO: new NodeIO().registerExtensions([KHRDracoMeshCompression])
         .registerDependencies({'draco3d.decoder': npmDecoder}),

@@ -30,9 +30,9 @@
  *  - the Laplacian GLB (lossy UVs) renders, not blank, with few pixels
  *    differing from the reference;
  *  - three's stock decoder fails with a decoding error on every GLB that
- *    requires DRACOUV_texcoord_compression (no blank success);
+ *    requires DRACOUV_attribute_compression (no blank success);
  *  - without the package's GLTFLoader plugin (three-plugin.mjs) GLTFLoader
- *    warns 'Unknown extension "DRACOUV_texcoord_compression"', with it not.
+ *    warns 'Unknown extension "DRACOUV_attribute_compression"', with it not.
  * Once: the package's gltf/ decoder and its asm.js fallback
  * (setDecoderConfig({type: 'js'})) give the reference's pixels; its lite/
  * decoder (no Laplacian coder) gives them on a lossless GLB and fails with a
@@ -54,7 +54,7 @@ import path from 'node:path';
 import {fileURLToPath} from 'node:url';
 
 const kHere = path.dirname(fileURLToPath(import.meta.url));
-const kExtension = 'DRACOUV_texcoord_compression';
+const kExtension = 'DRACOUV_attribute_compression';
 const kUnknownWarning = `Unknown extension "${kExtension}"`;
 // Assets with a base colour texture whose look depends on the UVs.
 const kAssets = ['CesiumMilkTruck/glTF/CesiumMilkTruck.gltf',

@@ -14,7 +14,7 @@
  * (prediction, seams, anchors: draco_encoder's -uv_pred / -uv_seams /
  * -uv_anchors names; without texCoordCompression the coding is stock
  * Draco 1.5.5's). When some primitive was encoded with draco-uv's ids, the
- * glTF gets DRACOUV_texcoord_compression in extensionsUsed and
+ * glTF gets DRACOUV_attribute_compression in extensionsUsed and
  * extensionsRequired (also with uncompressedFallback: loaders with a stock
  * Draco decoder would otherwise try the Draco data and fail). The stage's
  * encodes run between DracoUvModule.BeginGltfWrite() and EndGltfWrite(), so
@@ -37,7 +37,7 @@ const Module = require('module');
 const path = require('path');
 const draco3d = require('./draco3d.js');
 
-const MARKER = 'DRACOUV_texcoord_compression';
+const MARKER = 'DRACOUV_attribute_compression';
 
 // Modules shared by all calls (gltf-pipeline also creates its modules once).
 let encoderModulePromise;
@@ -165,5 +165,5 @@ module.exports = {
   get glbToGltf() {
     return loadPipeline().glbToGltf;
   },
-  DRACOUV_TEXCOORD_COMPRESSION: MARKER,
+  DRACOUV_ATTRIBUTE_COMPRESSION: MARKER,
 };

@@ -6,7 +6,7 @@
  *       --config node_modules/draco3d-uv/gltf-transform.config.mjs
  *
  * writes every TEXCOORD_n with draco-uv's coders and marks the file with
- * DRACOUV_texcoord_compression when some primitive used them; any command
+ * DRACOUV_attribute_compression when some primitive used them; any command
  * given this config also reads such files. The coders are chosen by
  * draco_encoder's -uv_pred / -uv_seams / -uv_anchors names in environment
  * variables:

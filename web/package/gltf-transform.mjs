@@ -1,10 +1,10 @@
 /**
  * @fileoverview glTF-Transform support for draco3d-uv: the Extension class of
- * DRACOUV_texcoord_compression and registerDracoUv(), which sets up a
+ * DRACOUV_attribute_compression and registerDracoUv(), which sets up a
  * glTF-Transform I/O to read and write files with draco-uv's texture
  * coordinate coders.
  *
- * DRACOUV_texcoord_compression has no JSON object of its own (like
+ * DRACOUV_attribute_compression has no JSON object of its own (like
  * KHR_mesh_quantization): listed in extensionsUsed and extensionsRequired,
  * it says that the Draco buffers of KHR_draco_mesh_compression may use
  * prediction scheme or Edgebreaker method ids that only a decoder with
@@ -21,12 +21,12 @@
  *    run between DracoUvModule.BeginGltfWrite() and EndGltfWrite(), so that
  *    with prediction 'auto' the first primitive that would need the marker
  *    keeps draco-uv's coding only if it saves more than the marker's JSON
- *    costs (80 bytes), as draco-uv's native glTF encoder does: auto never
+ *    costs (76 bytes), as draco-uv's native glTF encoder does: auto never
  *    makes a file bigger than stock coding.
  *
  * The extension must be present on a Document for its write hook to run:
  * registerDracoUv() adds it to every Document the I/O writes; without that
- * helper, call document.createExtension(DracoUvTexcoordCompression) before
+ * helper, call document.createExtension(DracoUvAttributeCompression) before
  * io.write().
  */
 'use strict';
@@ -36,7 +36,7 @@ import {KHRDracoMeshCompression} from '@gltf-transform/extensions';
 import draco3d from './draco3d.js';
 
 /** The extension's name, as draco-uv's native glTF encoder writes it. */
-export const DRACOUV_TEXCOORD_COMPRESSION = 'DRACOUV_texcoord_compression';
+export const DRACOUV_ATTRIBUTE_COMPRESSION = 'DRACOUV_attribute_compression';
 
 const ENCODER = 'draco3d.encoder';
 
@@ -86,12 +86,12 @@ function markGltfWrite(encoderModule, begin) {
 }
 
 /**
- * DRACOUV_texcoord_compression: marks files whose Draco buffers use
+ * DRACOUV_attribute_compression: marks files whose Draco buffers use
  * draco-uv's coders. Register it next to KHRDracoMeshCompression.
  */
-export class DracoUvTexcoordCompression extends Extension {
-  static EXTENSION_NAME = DRACOUV_TEXCOORD_COMPRESSION;
-  extensionName = DRACOUV_TEXCOORD_COMPRESSION;
+export class DracoUvAttributeCompression extends Extension {
+  static EXTENSION_NAME = DRACOUV_ATTRIBUTE_COMPRESSION;
+  extensionName = DRACOUV_ATTRIBUTE_COMPRESSION;
   writeDependencies = [ENCODER];
 
   // The encoder module of the write under way and its count of draco-uv
@@ -132,9 +132,9 @@ export class DracoUvTexcoordCompression extends Extension {
 
 /**
  * Sets up |io| (a NodeIO or WebIO) to read and write with draco3d-uv:
- * registers KHRDracoMeshCompression and DracoUvTexcoordCompression, this
+ * registers KHRDracoMeshCompression and DracoUvAttributeCompression, this
  * package's decoder and encoder modules as 'draco3d.decoder' and
- * 'draco3d.encoder', and adds DracoUvTexcoordCompression to every Document
+ * 'draco3d.encoder', and adds DracoUvAttributeCompression to every Document
  * the I/O writes (for the duration of the write, so that it marks the file
  * when needed).
  *
@@ -156,7 +156,7 @@ export async function registerDracoUv(io, options = {}) {
         draco3d.createEncoderModule(
             {texCoordCompression: options.texCoordCompression}),
   ]);
-  io.registerExtensions([KHRDracoMeshCompression, DracoUvTexcoordCompression])
+  io.registerExtensions([KHRDracoMeshCompression, DracoUvAttributeCompression])
       .registerDependencies({
         'draco3d.decoder': decoderModule,
         [ENCODER]: encoderModule,
@@ -166,9 +166,9 @@ export async function registerDracoUv(io, options = {}) {
   io.writeJSON = async (document, writerOptions) => {
     const root = document.getRoot();
     const present = root.listExtensionsUsed().some(
-        (ext) => ext.extensionName === DRACOUV_TEXCOORD_COMPRESSION);
+        (ext) => ext.extensionName === DRACOUV_ATTRIBUTE_COMPRESSION);
     const added =
-        present ? null : document.createExtension(DracoUvTexcoordCompression);
+        present ? null : document.createExtension(DracoUvAttributeCompression);
     try {
       return await writeJSON(document, writerOptions);
     } finally {

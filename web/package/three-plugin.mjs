@@ -1,34 +1,34 @@
 /**
  * three.js GLTFLoader plugin for glTF files written with draco-uv's coders.
  *
- * Such files list DRACOUV_texcoord_compression in extensionsUsed and
+ * Such files list DRACOUV_attribute_compression in extensionsUsed and
  * extensionsRequired. The extension has no JSON object: it says that the
  * KHR_draco_mesh_compression buffers may use prediction or Edgebreaker ids
  * that only a draco-uv decoder knows. three.js decodes them once its
  * DRACOLoader points at this package's folder (setDecoderPath); this plugin
  * only tells GLTFLoader that the extension is handled, so that it no longer
- * warns 'Unknown extension "DRACOUV_texcoord_compression"'. It changes no
+ * warns 'Unknown extension "DRACOUV_attribute_compression"'. It changes no
  * loading step and imports nothing (not even three), so a page can load it
  * from the package folder without an import map.
  *
  *   import {GLTFLoader} from 'three/addons/loaders/GLTFLoader.js';
  *   import {DRACOLoader} from 'three/addons/loaders/DRACOLoader.js';
- *   import {DracoUvTexcoordCompressionPlugin} from 'draco3d-uv/three';
+ *   import {DracoUvAttributeCompressionPlugin} from 'draco3d-uv/three';
  *
  *   const dracoLoader = new DRACOLoader().setDecoderPath('/draco3d-uv/');
  *   const loader = new GLTFLoader().setDRACOLoader(dracoLoader);
- *   loader.register((parser) => new DracoUvTexcoordCompressionPlugin(parser));
+ *   loader.register((parser) => new DracoUvAttributeCompressionPlugin(parser));
  */
 'use strict';
 
 /** The glTF extension name draco_transcoder writes. */
-export const DRACOUV_TEXCOORD_COMPRESSION = 'DRACOUV_texcoord_compression';
+export const DRACOUV_ATTRIBUTE_COMPRESSION = 'DRACOUV_attribute_compression';
 
-/** GLTFLoader plugin: marks DRACOUV_texcoord_compression as supported. */
-export class DracoUvTexcoordCompressionPlugin {
+/** GLTFLoader plugin: marks DRACOUV_attribute_compression as supported. */
+export class DracoUvAttributeCompressionPlugin {
   /** @param {object} parser three's GLTFParser (kept like three's plugins). */
   constructor(parser) {
     this.parser = parser;
-    this.name = DRACOUV_TEXCOORD_COMPRESSION;
+    this.name = DRACOUV_ATTRIBUTE_COMPRESSION;
   }
 }

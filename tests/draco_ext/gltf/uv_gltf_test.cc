@@ -19,13 +19,16 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <nlohmann/json.hpp>
 #include <set>
 #include <string>
 #include <vector>
 
 #include "draco/compression/expert_encode.h"
 #include "draco/io/scene_io.h"
+#include "draco/material/material.h"
 #include "draco/mesh/mesh_utils.h"
+#include "draco/metadata/geometry_metadata.h"
 #include "draco_ext/eval/uv_gltf_eval.h"
 #include "draco_ext/options/uv_configure.h"
 #include "gtest/gtest.h"
@@ -88,9 +91,9 @@ TEST_F(UvGltfEncoderTest, StockOptionsChangeNeitherBitstreamNorExtensions) {
       MakeEncoder(UvCompressionOptions());
   const std::unique_ptr<ExpertEncoder> configured =
       MakeEncoder(UvCompressionOptions());
-  ASSERT_TRUE(
-      ConfigureUvCompressionForGltf(*mesh_, configured, &used_, &required_)
-          .ok());
+  ASSERT_TRUE(ConfigureUvCompressionForGltf(*mesh_, nullptr, configured, &used_,
+                                            &required_)
+                  .ok());
   EXPECT_EQ(Encode(untouched.get()), Encode(configured.get()));
   EXPECT_TRUE(used_.empty());
   EXPECT_TRUE(required_.empty());
@@ -101,9 +104,9 @@ TEST_F(UvGltfEncoderTest, AnchorsReachTheLaplacianCoder) {
   for (const std::string anchors : {"", "50", "0"}) {
     const std::unique_ptr<ExpertEncoder> encoder =
         MakeEncoder(UvOptions("laplacian_mv", anchors));
-    ASSERT_TRUE(
-        ConfigureUvCompressionForGltf(*mesh_, *encoder, &used_, &required_)
-            .ok())
+    ASSERT_TRUE(ConfigureUvCompressionForGltf(*mesh_, nullptr, *encoder, &used_,
+                                              &required_)
+                    .ok())
         << anchors;
     streams.push_back(Encode(encoder.get()));
   }
@@ -123,15 +126,15 @@ TEST_F(UvGltfEncoderTest, AnchorsAreCheckedOnTheOptionsNotThePrimitive) {
   }
   const std::unique_ptr<ExpertEncoder> laplacian =
       MakeEncoder(UvOptions("laplacian_mv", "2%"));
-  EXPECT_EQ(
-      ConfigureUvCompressionForGltf(*mesh_, *laplacian, &used_, &required_)
-          .ok(),
-      HasUvLaplacianCoder());
+  EXPECT_EQ(ConfigureUvCompressionForGltf(*mesh_, nullptr, *laplacian, &used_,
+                                          &required_)
+                .ok(),
+            HasUvLaplacianCoder());
   const std::unique_ptr<ExpertEncoder> weighted =
       MakeEncoder(UvOptions("weighted", "2%"));
-  EXPECT_FALSE(
-      ConfigureUvCompressionForGltf(*mesh_, *weighted, &used_, &required_)
-          .ok());
+  EXPECT_FALSE(ConfigureUvCompressionForGltf(*mesh_, nullptr, *weighted, &used_,
+                                             &required_)
+                   .ok());
 }
 
 // The glTF hook, draco_transcoder's path (TranscodeGltfFile()) and
@@ -166,10 +169,10 @@ TEST_F(UvGltfEncoderTest, EntryPointsRejectTheSameAnchorOptions) {
         << label;
 
     const std::unique_ptr<ExpertEncoder> hooked = MakeEncoder(uv);
-    EXPECT_EQ(
-        ConfigureUvCompressionForGltf(*mesh_, *hooked, &used_, &required_)
-            .ok(),
-        c.valid)
+    EXPECT_EQ(ConfigureUvCompressionForGltf(*mesh_, nullptr, *hooked, &used_,
+                                            &required_)
+                  .ok(),
+              c.valid)
         << label;
 
     DracoCompressionOptions options;
@@ -190,9 +193,9 @@ TEST_F(UvGltfEncoderTest, ExtensionIsRequiredExactlyForDracoUvSchemes) {
     required_.clear();
     const std::unique_ptr<ExpertEncoder> encoder =
         MakeEncoder(UvOptions(name));
-    ASSERT_TRUE(
-        ConfigureUvCompressionForGltf(*mesh_, *encoder, &used_, &required_)
-            .ok())
+    ASSERT_TRUE(ConfigureUvCompressionForGltf(*mesh_, nullptr, *encoder, &used_,
+                                              &required_)
+                    .ok())
         << name;
     const bool uses_draco_uv = UsesDracoUvScheme(*mesh_, *encoder);
     EXPECT_EQ(uses_draco_uv, name == std::string("weighted")) << name;
@@ -209,6 +212,7 @@ TEST_F(UvGltfEncoderTest, ExtensionIsRequiredExactlyForDracoUvSchemes) {
 TEST(UvGltfTranscodeTest, EveryAssetRoundTripsLikeStockCoding) {
   UvGltfEvalOptions options;
   options.schemes = {"weighted"};
+  options.tangents = {"draco"};
   int evaluated = 0, textured = 0;
   for (const std::string &asset : DracoTestdataGltfAssets()) {
     for (const bool glb : {false, true}) {
@@ -236,6 +240,7 @@ TEST(UvGltfTranscodeTest, EveryAssetRoundTripsLikeStockCoding) {
 TEST(UvGltfTranscodeTest, ContextSeamsRoundTripAndRequireTheExtension) {
   UvGltfEvalOptions options;
   options.schemes = {"draco+context", "weighted+context"};
+  options.tangents = {"draco"};
   int textured = 0;
   for (const std::string &asset : DracoTestdataGltfAssets()) {
     const auto rows = EvaluateGltfAsset(DracoTestdataPath(asset), asset,
@@ -255,9 +260,39 @@ TEST(UvGltfTranscodeTest, ContextSeamsRoundTripAndRequireTheExtension) {
   EXPECT_GE(textured, 60);
 }
 
+// draco_transcoder -tangent_pred mikktspace on every glTF/GLB asset of
+// Draco's testdata (tangents with one or two UV sets, several primitives,
+// shared meshes, skins, none at all): every attribute reads back like
+// stock coding, and the file requires the extension only where it has
+// tangents.
+TEST(UvGltfTranscodeTest, TangentPredictionRoundTripsOnEveryAsset) {
+  UvGltfEvalOptions options;
+  options.schemes = {"draco"};
+  options.tangents = {"mikktspace"};
+  options.glb = true;
+  int with_tangents = 0;
+  for (const std::string &asset : DracoTestdataGltfAssets()) {
+    const auto rows = EvaluateGltfAsset(DracoTestdataPath(asset), asset,
+                                        options, UvTempPath(""));
+    if (!rows.ok()) {
+      continue;  // Morph targets etc.: stock draco_transcoder fails too.
+    }
+    for (const UvGltfEvalRow &row : rows.value()) {
+      EXPECT_TRUE(row.round_trip_ok) << asset << ": " << row.detail;
+      with_tangents += !row.tangent_costs.empty();
+      if (row.tangent_costs.empty()) {
+        EXPECT_FALSE(row.requires_extension) << asset;
+        EXPECT_EQ(row.bytes, row.stock_bytes) << asset;
+      }
+    }
+  }
+  EXPECT_GE(with_tangents, 15);
+}
+
 TEST(UvGltfTranscodeTest, AutoRoundTripsOnAssetsOfEveryKind) {
   UvGltfEvalOptions options;
   options.schemes = {"auto"};
+  options.tangents = {"auto"};
   for (const std::string asset :
        {"CesiumMilkTruck/glTF/CesiumMilkTruck.gltf",
         "MultiUVTest/glTF/MultiUVTest.gltf",
@@ -279,6 +314,7 @@ TEST(UvGltfTranscodeTest, AutoRoundTripsOnAssetsOfEveryKind) {
 TEST(UvGltfTranscodeTest, LaplacianRoundTripsOnAssetsOfEveryKind) {
   UvGltfEvalOptions options;
   options.schemes = {"laplacian_mv", "laplacian_cotan"};
+  options.tangents = {"draco"};
   for (const std::string asset :
        {"CesiumMilkTruck/glTF/CesiumMilkTruck.gltf",
         "MultiUVTest/glTF/MultiUVTest.gltf",
@@ -333,6 +369,283 @@ TEST(UvGltfTranscodeTest, ReaderStillRejectsOtherUnknownRequiredExtensions) {
   const auto scene = ReadSceneFromFile(output);
   ASSERT_FALSE(scene.ok());
   EXPECT_NE(scene.status().error_msg_string().find(other), std::string::npos);
+}
+
+TEST(UvGltfTangentTest, TangentsFollowTheNormalTexturesTexCoords) {
+  EXPECT_EQ(GltfTangentTexCoordSet(nullptr), 0);
+  const Material plain;
+  EXPECT_EQ(GltfTangentTexCoordSet(&plain), 0);
+  for (const int set : {0, 1}) {
+    Material material;
+    material.SetTextureMap(std::unique_ptr<Texture>(new Texture()),
+                           TextureMap::NORMAL_TANGENT_SPACE, set);
+    EXPECT_EQ(GltfTangentTexCoordSet(&material), set);
+  }
+  // Other textures on TEXCOORD_1 leave the tangents on TEXCOORD_0.
+  Material colored;
+  colored.SetTextureMap(std::unique_ptr<Texture>(new Texture()),
+                        TextureMap::COLOR, 1);
+  EXPECT_EQ(GltfTangentTexCoordSet(&colored), 0);
+}
+
+TEST(UvGltfTangentTest,
+     FirstTexCoordIsTexcoord0UnlessItsMetadataSaysOtherwise) {
+  auto mesh = ReadTestMesh(DracoTestdataPath("sphere_two_tex_coords.gltf"));
+  ASSERT_TRUE(mesh.ok());
+  ASSERT_EQ(mesh.value()->NumNamedAttributes(GeometryAttribute::TEX_COORD), 2);
+  EXPECT_EQ(GltfTexCoordSetOfFirstTexCoord(*mesh.value()), 0);
+  std::unique_ptr<AttributeMetadata> metadata(new AttributeMetadata());
+  metadata->AddEntryString("attribute_name", "TEXCOORD_1");
+  mesh.value()->AddAttributeMetadata(
+      mesh.value()->GetNamedAttributeId(GeometryAttribute::TEX_COORD),
+      std::move(metadata));
+  EXPECT_EQ(GltfTexCoordSetOfFirstTexCoord(*mesh.value()), 1);
+}
+
+// |mesh|, a glTF primitive with |uv| options, and its encoder as
+// GltfAsset::CompressMeshWithDraco() sets it up for draco_transcoder -qp 14
+// -qt 12 -qn 10 -qtg 8 at its compression level 7.
+struct GltfPrimitive {
+  std::unique_ptr<Mesh> mesh;
+  std::unique_ptr<ExpertEncoder> encoder;
+  std::set<std::string> used, required;
+};
+
+GltfPrimitive MakePrimitive(const std::string &path,
+                            const UvCompressionOptions &uv) {
+  GltfPrimitive primitive;
+  auto mesh = ReadTestMesh(path);
+  EXPECT_TRUE(mesh.ok()) << path;
+  primitive.mesh = std::move(mesh).value();
+  DracoCompressionOptions options;
+  options.uv = uv;
+  primitive.mesh->SetCompressionOptions(options);
+  primitive.encoder.reset(new ExpertEncoder(*primitive.mesh));
+  primitive.encoder->SetSpeedOptions(3, 3);
+  for (int i = 0; i < primitive.mesh->num_attributes(); ++i) {
+    const GeometryAttribute::Type type =
+        primitive.mesh->attribute(i)->attribute_type();
+    const int bits = type == GeometryAttribute::POSITION    ? 14
+                     : type == GeometryAttribute::TEX_COORD ? 12
+                     : type == GeometryAttribute::NORMAL    ? 10
+                                                            : 8;
+    primitive.encoder->SetAttributeQuantization(i, bits);
+  }
+  return primitive;
+}
+
+// Configures |primitive| drawn with |material|; returns the summary.
+std::string Configure(GltfPrimitive *primitive, const Material *material) {
+  const auto summary = ConfigureUvCompressionForGltfPrimitive(
+      *primitive->mesh, material, primitive->encoder.get(), &primitive->used,
+      &primitive->required);
+  EXPECT_TRUE(summary.ok()) << summary.status().error_msg();
+  return summary.ok() ? summary.value() : "";
+}
+
+int TangentScheme(const GltfPrimitive &primitive) {
+  return primitive.encoder->options().GetAttributeInt(
+      primitive.mesh->GetNamedAttributeId(GeometryAttribute::TANGENT),
+      "prediction_scheme", PREDICTION_UNDEFINED);
+}
+
+UvCompressionOptions TangentOptions(const std::string &uv,
+                                    TangentPrediction tangent) {
+  UvCompressionOptions options = UvOptions(uv);
+  options.tangent.prediction = tangent;
+  return options;
+}
+
+// Encoded bytes of |encoder|.
+std::vector<char> EncodedBytes(ExpertEncoder *encoder) {
+  EncoderBuffer buffer;
+  EXPECT_TRUE(encoder->EncodeToBuffer(&buffer).ok());
+  return std::vector<char>(buffer.data(), buffer.data() + buffer.size());
+}
+
+Material NormalTextureOn(int tex_coord_set) {
+  Material material;
+  material.SetTextureMap(std::unique_ptr<Texture>(new Texture()),
+                         TextureMap::NORMAL_TANGENT_SPACE, tex_coord_set);
+  return material;
+}
+
+// The tangent prediction reads TEXCOORD_0: a primitive whose normal texture
+// uses TEXCOORD_1 keeps stock tangent coding, says why, and is coded as
+// without -tangent_pred; with the normal texture on TEXCOORD_0 it is
+// predicted.
+TEST(UvGltfTangentTest, TangentsOfANormalTextureOnTexcoord1KeepStockCoding) {
+  const Material on_texcoord_1 = NormalTextureOn(1);
+  const Material on_texcoord_0 = NormalTextureOn(0);
+  for (const std::string &path : TangentGltfAssetPaths()) {
+    for (const TangentPrediction tangent :
+         {TangentPrediction::kMikkTSpace, TangentPrediction::kGeometric,
+          TangentPrediction::kAuto}) {
+      const std::string label = path + " " + TangentPredictionNameOf(tangent);
+      GltfPrimitive kept = MakePrimitive(path, TangentOptions("", tangent));
+      EXPECT_NE(Configure(&kept, &on_texcoord_1)
+                    .find("keeps stock coding: the material's normal texture "
+                          "uses TEXCOORD_1, the prediction reads TEXCOORD_0"),
+                std::string::npos)
+          << label;
+      EXPECT_EQ(TangentScheme(kept), PREDICTION_UNDEFINED) << label;
+      EXPECT_TRUE(kept.required.empty()) << label;
+      GltfPrimitive stock = MakePrimitive(path, UvCompressionOptions());
+      EXPECT_EQ(EncodedBytes(kept.encoder.get()),
+                EncodedBytes(stock.encoder.get()))
+          << label;
+
+      GltfPrimitive predicted =
+          MakePrimitive(path, TangentOptions("", tangent));
+      Configure(&predicted, &on_texcoord_0);
+      if (tangent != TangentPrediction::kAuto) {
+        EXPECT_EQ(TangentScheme(predicted), MESH_PREDICTION_GEOMETRIC_TANGENT)
+            << label;
+      }
+      EXPECT_EQ(predicted.required.count(kUvGltfExtension),
+                TangentScheme(predicted) == MESH_PREDICTION_GEOMETRIC_TANGENT)
+          << label;
+    }
+  }
+}
+
+// A scheme the options name is kept whatever it saves, even where -uv_pred
+// or -tangent_pred auto on another attribute would not pay for the
+// extension: the primitive needs the extension anyway.
+TEST(UvGltfTangentTest, NamedSchemesAreKeptNextToAuto) {
+  for (const std::string &path : TangentGltfAssetPaths()) {
+    GltfPrimitive uv_named = MakePrimitive(
+        path, TangentOptions("weighted", TangentPrediction::kAuto));
+    Configure(&uv_named, nullptr);
+    const int tex_coord =
+        uv_named.mesh->GetNamedAttributeId(GeometryAttribute::TEX_COORD);
+    EXPECT_EQ(uv_named.encoder->options().GetAttributeInt(
+                  tex_coord, "prediction_scheme", PREDICTION_UNDEFINED),
+              MESH_PREDICTION_TEX_COORDS_WEIGHTED)
+        << path;
+    EXPECT_EQ(uv_named.required.count(kUvGltfExtension), 1u) << path;
+
+    GltfPrimitive tangent_named = MakePrimitive(
+        path, TangentOptions("auto", TangentPrediction::kMikkTSpace));
+    Configure(&tangent_named, nullptr);
+    EXPECT_EQ(TangentScheme(tangent_named), MESH_PREDICTION_GEOMETRIC_TANGENT)
+        << path;
+    EXPECT_EQ(tangent_named.required.count(kUvGltfExtension), 1u) << path;
+  }
+}
+
+// auto keeps draco-uv ids only where they save more than the extension's
+// JSON: a primitive that keeps them is that much smaller than stock coding,
+// one that does not is no bigger.
+TEST(UvGltfTangentTest, AutoKeepsDracoUvIdsOnlyWhereTheyPayForTheExtension) {
+  for (const std::string &path : TangentGltfAssetPaths()) {
+    for (const std::string uv : {"", "auto"}) {
+      GltfPrimitive primitive =
+          MakePrimitive(path, TangentOptions(uv, TangentPrediction::kAuto));
+      Configure(&primitive, nullptr);
+      GltfPrimitive stock = MakePrimitive(path, UvCompressionOptions());
+      const size_t size = EncodedBytes(primitive.encoder.get()).size();
+      const size_t stock_size = EncodedBytes(stock.encoder.get()).size();
+      if (primitive.required.empty()) {
+        // -uv_pred auto may choose one of Draco's own schemes.
+        EXPECT_LE(size, stock_size) << path << " " << uv;
+      } else {
+        EXPECT_LT(size + kUvGltfExtensionJsonBytes, stock_size)
+            << path << " " << uv;
+      }
+    }
+  }
+}
+
+// Draco's sphere_two_tex_coords.gltf (TANGENT, TEXCOORD_0 and TEXCOORD_1,
+// a normal texture) copied into |dir| with its normal texture on
+// TEXCOORD_|set|; returns the copy's path.
+std::string SphereWithNormalTextureOn(int set, const std::string &dir) {
+  fs::create_directories(dir);
+  for (const char *file : {"sphere_buffer0.bin", "sphere_Texture0_Normal.png",
+                           "sphere_Texture1_BaseColor.png"}) {
+    fs::copy_file(DracoTestdataPath(file), fs::path(dir) / file,
+                  fs::copy_options::overwrite_existing);
+  }
+  nlohmann::json json = nlohmann::json::parse(
+      ReadText(DracoTestdataPath("sphere_two_tex_coords.gltf")));
+  json["materials"][0]["normalTexture"]["texCoord"] = set;
+  const std::string path = (fs::path(dir) / "sphere.gltf").string();
+  std::ofstream(path) << json.dump(2);
+  return path;
+}
+
+std::string ReadBytes(const std::string &path) {
+  std::ifstream stream(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(stream),
+                     std::istreambuf_iterator<char>());
+}
+
+// draco_transcoder -tangent_pred through the glTF encoder's hook: a file
+// whose normal texture uses TEXCOORD_1 comes out exactly as without the
+// flag; with the normal texture on TEXCOORD_0 its tangents are predicted
+// and the file requires the extension.
+TEST(UvGltfTranscodeTest, TangentPredictionFollowsTheNormalTexturesTexCoords) {
+  for (const TangentPrediction prediction :
+       {TangentPrediction::kMikkTSpace, TangentPrediction::kGeometric}) {
+    DracoCompressionOptions options;
+    options.uv.tangent.prediction = prediction;
+    for (const int set : {0, 1}) {
+      const std::string dir =
+          UvTempPath("normal_texture_on_" + std::to_string(set));
+      const std::string input = SphereWithNormalTextureOn(set, dir);
+      const std::string stock = (fs::path(dir) / "stock.glb").string();
+      const std::string ours = (fs::path(dir) / "ours.glb").string();
+      ASSERT_TRUE(
+          TranscodeGltfFile(input, stock, DracoCompressionOptions()).ok());
+      ASSERT_TRUE(TranscodeGltfFile(input, ours, options).ok()) << set;
+      EXPECT_EQ(ReadBytes(ours) == ReadBytes(stock), set == 1) << set;
+      EXPECT_EQ(RequiresUvGltfExtension(ours).value(), set == 0) << set;
+    }
+  }
+}
+
+// -tangent_pred auto, alone or with -uv_pred auto, never makes a glTF or GLB
+// file bigger than the stock transcoder's, the extension's JSON included,
+// and the file reads back like the stock one.
+TEST(UvGltfTranscodeTest, TangentAutoNeverMakesAFileBiggerThanStock) {
+  for (const std::string &path : TangentGltfAssetPaths()) {
+    for (const int qtg : {8, 12}) {
+      DracoCompressionOptions stock;
+      stock.quantization_position.SetQuantizationBits(14);
+      stock.quantization_bits_tex_coord = 12;
+      stock.quantization_bits_normal = 10;
+      stock.quantization_bits_tangent = qtg;
+      for (const char *ext : {".gltf", ".glb"}) {
+        const std::string label =
+            path + " -qtg " + std::to_string(qtg) + " " + ext;
+        const std::string stock_file =
+            UvTempPath(std::string("stock_tangents/out") + ext);
+        fs::create_directories(fs::path(stock_file).parent_path());
+        ASSERT_TRUE(TranscodeGltfFile(path, stock_file, stock).ok()) << label;
+        const auto stock_scene = ReadSceneFromFile(stock_file);
+        ASSERT_TRUE(stock_scene.ok()) << label;
+        for (const UvPrediction uv :
+             {UvPrediction::kDraco, UvPrediction::kAuto}) {
+          DracoCompressionOptions options = stock;
+          options.uv.prediction = uv;
+          options.uv.tangent.prediction = TangentPrediction::kAuto;
+          const std::string file =
+              UvTempPath(std::string("auto_tangents/out") + ext);
+          fs::create_directories(fs::path(file).parent_path());
+          ASSERT_TRUE(TranscodeGltfFile(path, file, options).ok()) << label;
+          EXPECT_LE(TranscodedGltfBytes(file).value(),
+                    TranscodedGltfBytes(stock_file).value())
+              << label << " " << UvPredictionNameOf(uv);
+          const auto scene = ReadSceneFromFile(file);
+          ASSERT_TRUE(scene.ok()) << label;
+          EXPECT_TRUE(
+              CompareSceneGeometry(*stock_scene.value(), *scene.value()).ok())
+              << label;
+        }
+      }
+    }
+  }
 }
 
 // glTF stores V flipped (v' = 1 - v) relative to Draco's meshes, which

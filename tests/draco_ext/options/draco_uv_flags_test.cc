@@ -30,10 +30,10 @@ UnhandledToolArg Classify(const std::string &arg, bool is_last = false) {
   return ClassifyUnhandledToolArg("draco_encoder", arg, is_last);
 }
 
-// The table of a build that has a -tangent_pred flag.
-UnhandledToolArg ClassifyWithTangents(const std::string &arg) {
+// The table of a build that has one more flag, -tangent_kinds.
+UnhandledToolArg ClassifyWithNewFlag(const std::string &arg) {
   std::vector<const char *> flags = DracoUvFlagNames();
-  flags.push_back("-tangent_pred");
+  flags.push_back("-tangent_kinds");
   return ClassifyUnhandledToolArg("draco_encoder", arg, false, flags,
                                   DracoUvFlagFamilies());
 }
@@ -70,7 +70,7 @@ TEST(DracoUvFlagsTest, OtherFlagsAreIgnoredWithAWarning) {
 TEST(DracoUvFlagsTest, NoStockFlagLooksLikeOurs) {
   for (const char *flag : kStockFlags) {
     EXPECT_EQ(Classify(flag).kind, UnhandledToolArg::kWarn) << flag;
-    EXPECT_EQ(ClassifyWithTangents(flag).kind, UnhandledToolArg::kWarn) << flag;
+    EXPECT_EQ(ClassifyWithNewFlag(flag).kind, UnhandledToolArg::kWarn) << flag;
   }
 }
 
@@ -133,11 +133,25 @@ TEST(DracoUvFlagsTest, FlagWithEqualsSuggestsFlagAndValue) {
             "unknown flag -uv_pred=; did you mean -uv_pred?");
 }
 
+// -qtg is draco_transcoder's own flag and draco_encoder's of draco-uv: the
+// stock quantization flags a letter or two from it are no typos of it.
+TEST(DracoUvFlagsTest, StockQuantizationFlagsAreNoNearMissesOfQtg) {
+  for (const char *flag : {"-qp", "-qt", "-qn", "-qg", "-qc", "-qw"}) {
+    EXPECT_EQ(Classify(flag, /*is_last=*/true).message,
+              "ignoring " + std::string(flag) + ": no value follows it");
+  }
+  EXPECT_EQ(Classify("-qtg", /*is_last=*/true).message,
+            "ignoring -qtg: no value follows it");
+  for (const char *arg : {"-qx", "-qtgg", "-q"}) {
+    EXPECT_EQ(Classify(arg).message,
+              "ignoring unknown flag " + std::string(arg));
+  }
+}
+
 TEST(DracoUvFlagsTest, FamilyFlagsAreOursWithoutAnEntry) {
-  // Flags of the families that this build does not have: still an error,
-  // never a stock file.
-  for (const char *arg : {"-tangent_quality", "--tangent_x", "-tangent_x",
-                          "-uv_quality", "-UV_Something_else"}) {
+  // No flag of that name in this build: still an error, never a stock file.
+  for (const char *arg : {"-tangent_x", "-tangent_kinds", "-uv_quality",
+                          "-UV_Something_else"}) {
     const UnhandledToolArg verdict = Classify(arg);
     EXPECT_EQ(verdict.kind, UnhandledToolArg::kError) << arg;
     EXPECT_EQ(verdict.suggestion, "") << arg;
@@ -145,35 +159,45 @@ TEST(DracoUvFlagsTest, FamilyFlagsAreOursWithoutAnEntry) {
               "unknown flag " + std::string(arg) +
                   "; this build's draco-uv flags are -uv_pred, -uv_anchors, "
                   "-uv_rmse, -uv_texels, -uv_texture_size, -uv_seams, "
-                  "-tangent_pred, -tangent_bits.");
+                  "-tangent_pred, -qtg.");
   }
 }
 
-TEST(DracoUvFlagsTest, AFlagIsOneEntryOfTheTable) {
-  EXPECT_EQ(ClassifyWithTangents("-tangent_prd").message,
+TEST(DracoUvFlagsTest, TangentFlagNearMissesSuggestTheFlag) {
+  EXPECT_EQ(Classify("-tangent_prd").message,
             "unknown flag -tangent_prd; did you mean -tangent_pred?");
-  EXPECT_EQ(ClassifyWithTangents("-tangentpred").suggestion, "-tangent_pred");
-  EXPECT_EQ(ClassifyWithTangents("--tangent_pred").suggestion, "-tangent_pred");
-  EXPECT_EQ(ClassifyWithTangents("-tangent_pred=auto").message,
+  EXPECT_EQ(Classify("-tangentpred").suggestion, "-tangent_pred");
+  EXPECT_EQ(Classify("--tangent_pred").suggestion, "-tangent_pred");
+  EXPECT_EQ(Classify("-tangent_pred=auto").message,
             "unknown flag -tangent_pred=auto; did you mean -tangent_pred "
             "auto?");
-  // The uv flags are unaffected.
-  EXPECT_EQ(ClassifyWithTangents("-uv_prd").suggestion, "-uv_pred");
-  EXPECT_EQ(ClassifyWithTangents("-foo").kind, UnhandledToolArg::kWarn);
+}
+
+TEST(DracoUvFlagsTest, AFlagIsOneEntryOfTheTable) {
+  EXPECT_EQ(ClassifyWithNewFlag("-tangent_kind").message,
+            "unknown flag -tangent_kind; did you mean -tangent_kinds?");
+  EXPECT_EQ(ClassifyWithNewFlag("--tangent-kinds").suggestion,
+            "-tangent_kinds");
+  // The other flags are unaffected.
+  EXPECT_EQ(ClassifyWithNewFlag("-uv_prd").suggestion, "-uv_pred");
+  EXPECT_EQ(ClassifyWithNewFlag("-tangent_prd").suggestion, "-tangent_pred");
+  EXPECT_EQ(ClassifyWithNewFlag("-foo").kind, UnhandledToolArg::kWarn);
 }
 
 TEST(DracoUvFlagsTest, FlagOfTheTableThatTheToolDoesNotTake) {
   // A flag of the table reaches the hook only when the tool has no branch
   // for it (a flag of the other tool).
-  const UnhandledToolArg verdict = ClassifyWithTangents("-tangent_pred");
+  const UnhandledToolArg verdict = ClassifyWithNewFlag("-tangent_kinds");
   EXPECT_EQ(verdict.kind, UnhandledToolArg::kError);
-  EXPECT_EQ(verdict.message, "-tangent_pred is not a flag of draco_encoder");
+  EXPECT_EQ(verdict.message, "-tangent_kinds is not a flag of draco_encoder");
   EXPECT_EQ(ClassifyUnhandledToolArg("", "-uv_pred", false).message,
             "-uv_pred is not a flag of this tool");
 }
 
 TEST(DracoUvFlagsTest, TableMatchesTheParsersAndTheHelp) {
   const std::string usage = UvCompressionUsage();
+  const std::set<std::string> stock(std::begin(kStockFlags),
+                                    std::end(kStockFlags));
   std::set<std::string> table;
   for (const char *flag : DracoUvFlagNames()) {
     EXPECT_TRUE(table.insert(flag).second) << "twice: " << flag;
@@ -181,16 +205,15 @@ TEST(DracoUvFlagsTest, TableMatchesTheParsersAndTheHelp) {
     for (const char *family : DracoUvFlagFamilies()) {
       in_family |= std::string(flag).rfind(family, 0) == 0;
     }
-    EXPECT_TRUE(in_family) << flag;
+    // A flag is of a family or has a stock tool's name (-qtg).
+    EXPECT_NE(in_family, stock.count(flag) == 1) << flag;
     // A flag of the table is handled before the hook, so it is never
     // reported as unknown.
-    if (std::string(flag).rfind("-uv_", 0) == 0) {
-      EXPECT_TRUE(IsUvCompressionFlag(flag)) << flag;
-      EXPECT_NE(usage.find(std::string(flag) + " "), std::string::npos) << flag;
-    }
+    EXPECT_TRUE(IsUvCompressionFlag(flag)) << flag;
+    EXPECT_NE(usage.find(std::string(flag) + " "), std::string::npos) << flag;
   }
   // Every flag the help text names is in the table.
-  const std::regex flag_pattern("-uv_[a-z][a-z_]*");
+  const std::regex flag_pattern("-(uv|tangent)_[a-z][a-z_]*");
   for (auto it = std::sregex_iterator(usage.begin(), usage.end(), flag_pattern);
        it != std::sregex_iterator(); ++it) {
     EXPECT_EQ(table.count(it->str()), 1u) << it->str();

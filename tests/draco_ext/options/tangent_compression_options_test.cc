@@ -62,7 +62,7 @@ TEST(TangentCompressionOptionsTest, NamesSelectTheirConventions) {
 }
 
 TEST(TangentCompressionOptionsTest, FlagsParseThroughTheUvParser) {
-  const char *argv[] = {"draco_encoder", "-tangent_pred", "auto", "-tangent_bits", "12"};
+  const char *argv[] = {"draco_encoder", "-tangent_pred", "auto", "-qtg", "12"};
   UvCompressionOptions options;
   for (int i = 1; i < 5; ++i) {
     ASSERT_TRUE(IsUvCompressionFlag(argv[i]));
@@ -79,7 +79,7 @@ TEST(TangentCompressionOptionsTest, FlagsParseThroughTheUvParser) {
 TEST(TangentCompressionOptionsTest, QuantizationBitsOutsideTheGridFail) {
   TangentCompressionOptions options;
   for (const std::string bad : {"0", "22", "-3", "8x", ""}) {
-    EXPECT_FALSE(ParseTangentCompressionFlag("-tangent_bits", bad, &options).ok())
+    EXPECT_FALSE(ParseTangentCompressionFlag("-qtg", bad, &options).ok())
         << bad;
   }
   options.quantization_bits = 22;
@@ -93,7 +93,7 @@ TEST(TangentCompressionOptionsTest, DefaultIsStockAndHelpNamesEverything) {
   EXPECT_TRUE(UvCompressionOptions().IsStock());
   const std::string usage = UvCompressionUsage();
   EXPECT_NE(usage.find("-tangent_pred"), std::string::npos);
-  EXPECT_NE(usage.find("-tangent_bits"), std::string::npos);
+  EXPECT_NE(usage.find("-qtg"), std::string::npos);
   for (const TangentPredictionName &entry : TangentPredictionNames()) {
     EXPECT_NE(usage.find(entry.name), std::string::npos) << entry.name;
   }

@@ -40,7 +40,7 @@ int TangentId(const Mesh &mesh) {
 }
 
 // draco_encoder -qp 14 -qt 12 -cl |cl| [-uv_pred |uv|] -tangent_pred |name|
-// -tangent_bits 8.
+// -qtg 8.
 UvEncodeSettings TangentSettings(const std::string &name, int cl = 7,
                                  const std::string &uv = "") {
   UvEncodeSettings settings = Settings(14, 12, cl, uv);
@@ -149,6 +149,15 @@ TEST(TangentPredictionOptionsTest, KeepsStockCodingWhereInputsAreNotExact) {
   const float nan[3] = {std::numeric_limits<float>::quiet_NaN(), 0, 1};
   nan_normal.attribute(nan_normal.GetNamedAttributeId(GeometryAttribute::NORMAL))
       ->SetAttributeValue(AttributeValueIndex(5), nan);
+  // Tangents along one axis, as on a flat asset: a quantization step far
+  // below the scheme's fixed point.
+  Mesh flat_tangents;
+  flat_tangents.Copy(*spot);
+  PointAttribute *const tangents = flat_tangents.attribute(TangentId(*spot));
+  for (AttributeValueIndex i(0); i < tangents->size(); ++i) {
+    const float along_x[4] = {1, (i.value() % 2) * 1e-6f, 0, 1};
+    tangents->SetAttributeValue(i, along_x);
+  }
   struct Case {
     const Mesh *mesh;
     int cl;
@@ -156,6 +165,7 @@ TEST(TangentPredictionOptionsTest, KeepsStockCodingWhereInputsAreNotExact) {
     std::string why;
   };
   const Case cases[] = {
+      {&flat_tangents, 7, "", "vary too little"},
       {spot.get(), 3, "", "-cl 5 or higher"},
       {spot.get(), 0, "", "Edgebreaker"},
       {spot.get(), 7, "laplacian_mv", "coded lossily"},

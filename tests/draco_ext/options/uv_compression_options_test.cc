@@ -389,5 +389,73 @@ TEST(UvCompressionOptionsTest, CheckSeamsNeedEdgebreaker) {
   EXPECT_TRUE(options.Check().ok());
 }
 
+// -tangent_pred in glTF options (draco_transcoder): an error names what is
+// missing when the options rule the prediction out on every primitive; auto
+// needs only quantized tangents (it keeps stock coding elsewhere).
+TEST(UvCompressionOptionsTest, GltfTangentPredictionNeedsWhatItPredictsFrom) {
+  struct Case {
+    const char *label;
+    TangentPrediction prediction;
+    void (*change)(DracoCompressionOptions *);
+    const char *error;  // "" for valid options.
+  };
+  const Case cases[] = {
+      {"defaults", TangentPrediction::kMikkTSpace,
+       [](DracoCompressionOptions *) {}, ""},
+      {"auto", TangentPrediction::kAuto, [](DracoCompressionOptions *) {}, ""},
+      {"auto at level 3", TangentPrediction::kAuto,
+       [](DracoCompressionOptions *o) { o->compression_level = 3; }, ""},
+      {"level 0", TangentPrediction::kAuto,
+       [](DracoCompressionOptions *o) { o->compression_level = 0; },
+       "-tangent_pred needs Edgebreaker encoding: compression level 1 or "
+       "more."},
+      {"level 4", TangentPrediction::kFace,
+       [](DracoCompressionOptions *o) { o->compression_level = 4; },
+       "-tangent_pred face needs compression level 5 or more (below, Draco "
+       "splits meshes on attribute seams)."},
+      {"-qtg 0", TangentPrediction::kAuto,
+       [](DracoCompressionOptions *o) { o->quantization_bits_tangent = 0; },
+       "-tangent_pred needs quantized tangents: -qtg 1 to 21."},
+      {"-qtg 22", TangentPrediction::kGeometric,
+       [](DracoCompressionOptions *o) { o->quantization_bits_tangent = 22; },
+       "-tangent_pred needs quantized tangents: -qtg 1 to 21."},
+      {"-qp 0", TangentPrediction::kUniform,
+       [](DracoCompressionOptions *o) {
+         o->quantization_position.SetQuantizationBits(0);
+       },
+       "-tangent_pred uniform needs quantized positions."},
+      {"-qn 0", TangentPrediction::kMikkTSpace,
+       [](DracoCompressionOptions *o) { o->quantization_bits_normal = 0; },
+       "-tangent_pred mikktspace needs quantized normals."},
+      {"-qt 0", TangentPrediction::kMikkTSpace,
+       [](DracoCompressionOptions *o) { o->quantization_bits_tex_coord = 0; },
+       "-tangent_pred mikktspace needs quantized texture coordinates."},
+      {"draco_encoder's -qtg", TangentPrediction::kAuto,
+       [](DracoCompressionOptions *o) { o->uv.tangent.quantization_bits = 8; },
+       "-qtg of draco_encoder (UvCompressionOptions::tangent."
+       "quantization_bits) does not apply to glTF: tangents take "
+       "DracoCompressionOptions::quantization_bits_tangent "
+       "(draco_transcoder's -qtg)."},
+  };
+  for (const Case &c : cases) {
+    DracoCompressionOptions options;
+    options.uv.tangent.prediction = c.prediction;
+    c.change(&options);
+    const Status status = options.Check();
+    EXPECT_EQ(status.error_msg_string(), c.error) << c.label;
+    EXPECT_EQ(status.ok(), std::string(c.error).empty()) << c.label;
+  }
+  if (HasUvLaplacianCoder()) {
+    DracoCompressionOptions lossy_uvs =
+        WithPrediction(UvPrediction::kLaplacianMeanValue);
+    lossy_uvs.uv.tangent.prediction = TangentPrediction::kMikkTSpace;
+    EXPECT_EQ(lossy_uvs.Check().error_msg_string(),
+              "-tangent_pred mikktspace needs losslessly coded texture "
+              "coordinates, not -uv_pred laplacian_mv.");
+    lossy_uvs.uv.tangent.prediction = TangentPrediction::kAuto;
+    EXPECT_TRUE(lossy_uvs.Check().ok());
+  }
+}
+
 }  // namespace
 }  // namespace draco

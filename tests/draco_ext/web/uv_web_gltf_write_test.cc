@@ -83,7 +83,8 @@ std::vector<char> EncodeAsNativeGltf(Mesh *mesh, const std::string &prediction,
   encoder.Reset(settings.CreateExpertEncoderOptions(*mesh));
   std::set<std::string> used, required;
   EXPECT_TRUE(
-      ConfigureUvCompressionForGltf(*mesh, encoder, &used, &required).ok());
+      ConfigureUvCompressionForGltf(*mesh, nullptr, encoder, &used, &required)
+          .ok());
   *marked = required.count(kUvGltfExtension) > 0;
   EncoderBuffer buffer;
   EXPECT_TRUE(encoder.EncodeToBuffer(&buffer).ok());
