@@ -165,7 +165,7 @@ TEST(TangentPredictionOptionsTest, KeepsStockCodingWhereInputsAreNotExact) {
     std::string why;
   };
   const Case cases[] = {
-      {&flat_tangents, 7, "", "vary too little"},
+      {&flat_tangents, 7, "", "span too small a range"},
       {spot.get(), 3, "", "-cl 5 or higher"},
       {spot.get(), 0, "", "Edgebreaker"},
       {spot.get(), 7, "laplacian_mv", "coded lossily"},
