@@ -304,11 +304,14 @@ TEST(MalformedInputTest, UnknownOrMismatchedPredictionIdsAreRejected) {
 }
 
 // Where MESH_PREDICTION_GEOMETRIC_TANGENT's header lies in a file: the
-// bitstream guard, the format version after it and GeometricTangentConfig
-// from |config| to |streams| (the residual streams' start).
+// bitstream guard, the format version after it, GeometricTangentConfig from
+// |config|, the TangentExceptions its flags ask for, the token count (a
+// varint) from |tokens| and the residual streams from |streams|.
 struct TangentHeader {
   int guard = -1;
   int config = -1;
+  int config_end = -1;
+  int tokens = -1;
   int streams = -1;
   GeometricTangentConfig value;
 };
@@ -332,12 +335,29 @@ TangentHeader FindTangentHeader(const std::vector<char> &data) {
     DecoderBuffer buffer;
     buffer.Init(data.data() + offset + 9, data.size() - offset - 9);
     GeometricTangentConfig config;
-    if (config.Decode(&buffer)) {
-      found.guard = offset;
-      found.config = offset + 9;
-      found.streams = found.config + static_cast<int>(buffer.decoded_size());
-      found.value = config;
+    if (!config.Decode(&buffer)) {
+      continue;
     }
+    const int config_size = static_cast<int>(buffer.decoded_size());
+    TangentExceptions exceptions;
+    uint32_t num_tokens;
+    if ((config.handedness_exceptions &&
+         !exceptions.Decode(true, std::numeric_limits<int>::max(), &buffer)) ||
+        (config.copy_exceptions &&
+         !exceptions.Decode(false, std::numeric_limits<int>::max(),
+                            &buffer))) {
+      continue;
+    }
+    const int tokens = offset + 9 + static_cast<int>(buffer.decoded_size());
+    if (!DecodeVarint(&num_tokens, &buffer)) {
+      continue;
+    }
+    found.guard = offset;
+    found.config = offset + 9;
+    found.config_end = found.config + config_size;
+    found.tokens = tokens;
+    found.streams = offset + 9 + static_cast<int>(buffer.decoded_size());
+    found.value = config;
   }
   return found;
 }
@@ -348,7 +368,7 @@ std::vector<char> WithConfigBytes(const std::vector<char> &data,
                                   const std::vector<char> &bytes) {
   std::vector<char> result(data.begin(), data.begin() + header.config);
   result.insert(result.end(), bytes.begin(), bytes.end());
-  result.insert(result.end(), data.begin() + header.streams, data.end());
+  result.insert(result.end(), data.begin() + header.config_end, data.end());
   return result;
 }
 
@@ -447,10 +467,10 @@ TEST(MalformedInputTest, TangentHeaderValuesOutOfRangeAreRejected) {
       data[header.guard + 8] = static_cast<char>(version);
       expect_rejected(data, "format version " + std::to_string(version));
     }
-    // The kind (bits 0-1, below kNumGeometricTangentKinds) and the
-    // handedness flag (bit 2); nothing else.
+    // The kind (bits 0-1, below kNumGeometricTangentKinds), the handedness
+    // flag (bit 2) and the two exception flags (bits 3-4); nothing else.
     for (int byte = 0; byte < 256; ++byte) {
-      if ((byte & 3) < kNumGeometricTangentKinds && byte <= 7) {
+      if ((byte & 3) < kNumGeometricTangentKinds && byte <= 31) {
         continue;
       }
       std::vector<char> data = file.data;
@@ -508,18 +528,16 @@ TEST(MalformedInputTest, TangentHeaderValuesOutOfRangeAreRejected) {
       }
     }
     // The residual streams: table starts (uint16; context 0 never starts a
-    // table, there are no contexts from kTangentNumContexts on), then a
-    // token count of 2^32 - 1, far above the number of residuals.
+    // table, there are no contexts from kTangentNumContexts on); the token
+    // count before them set to 2^32 - 1, far above the number of residuals.
     for (const int bit : {0, kTangentNumContexts}) {
       std::vector<char> data = file.data;
       data[header.streams + bit / 8] |= static_cast<char>(1 << (bit % 8));
       expect_rejected(data, "table start bit " + std::to_string(bit));
     }
-    std::vector<char> huge(file.data.begin(),
-                           file.data.begin() + header.streams + 2);
+    std::vector<char> huge(file.data.begin(), file.data.begin() + header.tokens);
     huge.insert(huge.end(), {'\xff', '\xff', '\xff', '\xff', '\x0f'});
-    huge.insert(huge.end(), file.data.begin() + header.streams + 3,
-                file.data.end());
+    huge.insert(huge.end(), file.data.begin() + header.streams, file.data.end());
     expect_rejected(huge, "huge token count");
   }
   EXPECT_LT(PeakRssKb(), kMaxPeakRssKb);
