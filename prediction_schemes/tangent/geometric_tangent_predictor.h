@@ -38,6 +38,17 @@
 #include "prediction_schemes/tangent/geometric_tangent_settings.h"
 #include "prediction_schemes/tangent/tangent_geometry.h"
 
+// For the per-entry functions the coding loop calls once per entry: inlined
+// there, they pass the prediction in registers instead of through memory
+// (compilers otherwise keep them out of line as too large).
+#if defined(__GNUC__) || defined(__clang__)
+#define DRACO_UV_TANGENT_INLINE __attribute__((always_inline)) inline
+#elif defined(_MSC_VER)
+#define DRACO_UV_TANGENT_INLINE __forceinline
+#else
+#define DRACO_UV_TANGENT_INLINE inline
+#endif
+
 namespace draco {
 
 // The integer components of a parent attribute by point. Read in place
@@ -167,8 +178,8 @@ class GeometricTangentPredictor {
                    int normal_bits);
 
   // The prediction of |entry|.
-  GeometricTangentPrediction Predict(const MeshDataT &mesh_data,
-                                     int entry) const;
+  DRACO_UV_TANGENT_INLINE GeometricTangentPrediction
+  Predict(const MeshDataT &mesh_data, int entry) const;
 
  private:
   // Positions and texture coordinates are brought below these (see above).
