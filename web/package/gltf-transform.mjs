@@ -150,8 +150,9 @@ export class DracoUvAttributeCompression extends Extension {
  *     tangentCompression: {prediction, quantizationBits} by -tangent_pred
  *     and -qtg, the coding of every TANGENT this I/O writes, predicted from
  *     the primitive's first TEX_COORD attribute (default: none, stock
- *     Draco coding; KHRDracoMeshCompression's quantizeGeneric, 12 bits by
- *     default, quantizes the tangents, so quantizationBits does not apply);
+ *     Draco coding; draco()'s quantizeGeneric, 12 bits by default,
+ *     quantizes the tangents, so quantizationBits applies only with
+ *     quantizeGeneric 0);
  *     decoderModule / encoderModule: modules to use instead of new ones.
  * @return {!Promise<!Object>} |io|; rejects with the encoder's message when
  *     a name in texCoordCompression or tangentCompression is unknown.
