@@ -20,10 +20,17 @@
 # UV scheme below, then times the decodes in one Node.js process
 # (benchmarks/web_decode_bench.js) and prints its Markdown to stdout.
 #
-#   scripts/web-decode-bench.sh [--quick] [--rounds N] [--warmup N]
-#       [--meshes a,b,...] [--build DIR] [--package DIR] [--corpus DIR]
-#       [--clock cpu|wall] [--tsv FILE] [--keep DIR]
+#   scripts/web-decode-bench.sh [--quick] [--tangents] [--rounds N]
+#       [--warmup N] [--meshes a,b,...] [--build DIR] [--package DIR]
+#       [--corpus DIR] [--clock cpu|wall] [--tsv FILE] [--keep DIR]
 #
+#   --tangents  the tangent schemes instead: the corpus's glTF assets
+#               (CORPUS/gltf/*.gltf, those with TANGENT) and
+#               testdata/*_tangents.glb, each stock-coded and with
+#               -tangent_pred auto, mikktspace and geometric at -cl 10
+#               -qp 14 -qt 12 -qn 10 -qtg 8, UVs stock-coded so that npm
+#               draco3d reads the stock file (--meshes: file names without
+#               extension)
 #   --quick     smoke run: 4 small and medium meshes, 3 rounds, 1 warm-up
 #   --rounds N  timed rounds per mesh (default 15); --warmup N (default 3)
 #   --meshes    comma-separated corpus names (MANIFEST.tsv's first column)
@@ -51,8 +58,10 @@ meshes=""
 tsv=""
 clock=cpu
 keep=""
+tangents=0
 while [[ $# -gt 0 ]]; do
   case "$1" in
+    --tangents) tangents=1 ;;
     --quick) rounds=3; warmup=1
              meshes=khr_waterbottle,crane_spot,khr_scifihelmet
              meshes+=,param_armadillo_xatlas ;;
@@ -108,8 +117,30 @@ encode() {  # OBJ OUT [OPTIONS...]
 
 index="${work}/index.tsv"
 printf 'mesh\tkind\tuv_vertices\tscheme\tfile\tbytes\n' >"${index}"
+if [[ ${tangents} -eq 1 ]]; then
+  settings=(-cl 10 -qp 14 -qt 12 -qn 10 -qtg 8)
+  schemes=("tangent_auto|-tangent_pred auto"
+           "tangent_mikktspace|-tangent_pred mikktspace"
+           "tangent_geometric|-tangent_pred geometric")
+  for file in "${corpus}"/gltf/*.gltf "${root}"/testdata/*_tangents.glb; do
+    [[ -e "${file}" ]] || continue
+    grep -aq '"TANGENT"' "${file}" || continue
+    name="$(basename "${file%.*}")"
+    if [[ -n "${meshes}" && ",${meshes}," != *",${name},"* ]]; then continue; fi
+    echo "encoding ${name}" >&2
+    for entry in "stock|" "${schemes[@]}"; do
+      label="${entry%%|*}"
+      read -r -a options <<<"${entry#*|}"
+      encode "${file}" "${work}/${name}.${label}.drc" "${options[@]}"
+      printf '%s\tgltf\t-\t%s\t%s\t%s\n' "${name}" "${label}" \
+        "${name}.${label}.drc" \
+        "$(stat -c %s "${work}/${name}.${label}.drc")" >>"${index}"
+    done
+  done
+fi
 # MANIFEST.tsv columns: name file ... kind(6) triangles positions uv_vertices(9)
-while IFS=$'\t' read -r name file _ _ _ kind _ _ uv_vertices _; do
+while [[ ${tangents} -eq 0 ]] &&
+    IFS=$'\t' read -r name file _ _ _ kind _ _ uv_vertices _; do
   [[ "${name}" == name ]] && continue
   if [[ -n "${meshes}" && ",${meshes}," != *",${name},"* ]]; then continue; fi
   obj="${corpus}/${file}"

@@ -83,7 +83,6 @@ StatusOr<std::string> ConfigureUvCompression(
     const std::map<int, UvCompressionOptions> &per_attribute,
     const Mesh *mesh, ExpertEncoder *encoder) {
   UvSeamCoding seam_coding = UvSeamCoding::kDraco;
-  TangentCompressionOptions tangent;
   for (const auto &[att_id, options] : per_attribute) {
     DRACO_RETURN_IF_ERROR(CheckUvCompressionOptions(options));
     if (mesh != nullptr &&
@@ -97,10 +96,8 @@ StatusOr<std::string> ConfigureUvCompression(
     if (options.seams != UvSeamCoding::kDraco) {
       seam_coding = options.seams;
     }
-    if (!options.tangent.IsStock()) {
-      tangent = options.tangent;
-    }
   }
+  const TangentCompressionOptions tangent = TangentOptionsOf(per_attribute);
   DRACO_RETURN_IF_ERROR(CheckTangentValues(tangent, mesh));
   DRACO_ASSIGN_OR_RETURN(std::string summary,
                          ConfigureUvSeams(seam_coding, mesh, encoder));
@@ -113,6 +110,17 @@ StatusOr<std::string> ConfigureUvCompression(
   DRACO_ASSIGN_OR_RETURN(const std::string tangents,
                          ConfigureTangentPrediction(tangent, mesh, encoder));
   return summary + tangents;
+}
+
+TangentCompressionOptions TangentOptionsOf(
+    const std::map<int, UvCompressionOptions> &per_attribute) {
+  TangentCompressionOptions tangent;
+  for (const auto &entry : per_attribute) {
+    if (!entry.second.tangent.IsStock()) {
+      tangent = entry.second.tangent;
+    }
+  }
+  return tangent;
 }
 
 }  // namespace draco

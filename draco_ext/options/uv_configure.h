@@ -49,11 +49,17 @@ StatusOr<std::string> ConfigureUvCompression(
 // seams are coded with context when any entry asks for it (Edgebreaker codes
 // the seams of all attributes together), then each attribute's prediction is
 // applied in attribute order, then the tangent options of the last entry
-// that has any apply to the mesh's tangents. An empty map leaves |encoder|
-// untouched.
+// that has any apply to the mesh's tangents (TangentOptionsOf()). An empty
+// map leaves |encoder| untouched.
 StatusOr<std::string> ConfigureUvCompression(
     const std::map<int, UvCompressionOptions> &per_attribute,
     const Mesh *mesh, ExpertEncoder *encoder);
+
+// The tangent options the per-attribute ConfigureUvCompression() applies to
+// the mesh's tangents: those of the last entry of |per_attribute| that has
+// any, else stock coding.
+TangentCompressionOptions TangentOptionsOf(
+    const std::map<int, UvCompressionOptions> &per_attribute);
 
 }  // namespace draco
 

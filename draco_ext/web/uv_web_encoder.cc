@@ -19,7 +19,9 @@
 #include <memory>
 
 #include "draco/compression/config/compression_shared.h"
+#include "draco_ext/common/uv_prediction_ids.h"
 #include "draco_ext/gltf/uv_gltf.h"
+#include "draco_ext/options/tangent_compression_options.h"
 #include "draco_ext/options/uv_configure.h"
 #include "draco_ext/options/uv_seam_options.h"
 
@@ -47,21 +49,31 @@ bool WroteDracoUvIds(const Mesh &mesh, const ExpertEncoder &encoder,
          UsesDracoUvScheme(mesh, encoder);
 }
 
-// True when every attribute's options leave the choice to the encoder
-// (-uv_pred auto, or an error target without -uv_pred) or keep Draco's own
-// prediction, and one leaves it to the encoder: the case in which the glTF
-// encoder may fall back to stock coding.
-bool OnlyAutoChooses(const std::map<int, UvCompressionOptions> &options) {
-  bool any_auto = false;
-  for (const auto &entry : options) {
-    const UvPrediction prediction = entry.second.prediction;
-    if (prediction != UvPrediction::kAuto &&
-        prediction != UvPrediction::kDraco) {
-      return false;
+// True when |encoder| codes an attribute of |mesh| with a draco-uv scheme
+// that |per_attribute| named rather than left to the encoder (-uv_pred auto
+// or an error target for TEX_COORD, -tangent_pred auto for the tangents):
+// the native glTF encoder's rule (gltf/uv_gltf.cc), under which such a
+// primitive needs the glTF extension whatever its coders save.
+bool UsesNamedDracoUvScheme(
+    const Mesh &mesh, const ExpertEncoder &encoder,
+    const std::map<int, UvCompressionOptions> &per_attribute) {
+  const bool tangents_chosen =
+      TangentOptionsOf(per_attribute).prediction == TangentPrediction::kAuto;
+  for (int att_id = 0; att_id < mesh.num_attributes(); ++att_id) {
+    const int method = encoder.options().GetAttributeInt(
+        att_id, "prediction_scheme", PREDICTION_UNDEFINED);
+    if (!IsDracoUvPredictionMethod(method)) {
+      continue;
     }
-    any_auto = any_auto || entry.second.ChoosesPrediction();
+    const auto own = per_attribute.find(att_id);
+    const bool chosen = own != per_attribute.end()
+                            ? own->second.ChoosesPrediction()
+                            : tangents_chosen;
+    if (!chosen) {
+      return true;
+    }
   }
-  return any_auto;
+  return false;
 }
 
 }  // namespace
@@ -108,6 +120,35 @@ bool DracoUvOptions::SetAnchors(const char *spec) {
     options_.anchors = anchors.value();
   }
   return Result(anchors.status());
+}
+
+bool DracoUvOptions::SetTangentPrediction(const char *name) {
+  const std::string value = name == nullptr ? "" : name;
+  if (value.empty()) {
+    options_.tangent.prediction = TangentPrediction::kDraco;
+    return Result(OkStatus());
+  }
+  const StatusOr<TangentPrediction> prediction =
+      ParseTangentPredictionName(value);
+  if (prediction.ok()) {
+    options_.tangent.prediction = prediction.value();
+  }
+  return Result(prediction.status());
+}
+
+bool DracoUvOptions::SetTangentQuantization(long bits) {
+  if (bits == 0) {
+    options_.tangent.quantization_bits.reset();
+    return Result(OkStatus());
+  }
+  TangentCompressionOptions tangent;
+  tangent.quantization_bits = static_cast<int>(
+      std::clamp<long>(bits, -1, std::numeric_limits<int>::max()));
+  const Status status = CheckTangentCompressionOptions(tangent);
+  if (status.ok()) {
+    options_.tangent.quantization_bits = tangent.quantization_bits;
+  }
+  return Result(status);
 }
 
 bool DracoUvOptions::SetRmse(double rmse) {
@@ -254,7 +295,8 @@ Status UvWebEncoder::EncodeConfigured(const Mesh &mesh,
   }
   std::string chosen = summary.value();
   if (module_->gltf_extension_not_yet_paid() &&
-      OnlyAutoChooses(per_attribute) && UsesDracoUvScheme(mesh, encoder)) {
+      UsesDracoUvScheme(mesh, encoder) &&
+      !UsesNamedDracoUvScheme(mesh, encoder, per_attribute)) {
     const Status status =
         KeepDracoUvOnlyIfItPaysForTheExtension(mesh, &encoder);
     if (!status.ok()) {
@@ -262,8 +304,8 @@ Status UvWebEncoder::EncodeConfigured(const Mesh &mesh,
     }
     if (!UsesDracoUvScheme(mesh, encoder)) {
       chosen += std::string(
-                    "UV prediction (auto): draco for every TEX_COORD "
-                    "attribute (draco-uv's saving does not pay for ") +
+                    "Prediction (auto): draco for every attribute "
+                    "(draco-uv's saving does not pay for ") +
                 kUvGltfExtension + ")\n";
     }
   }

@@ -13,15 +13,17 @@
 // limitations under the License.
 //
 // What Draco's JavaScript encoder API (draco_web_encoder.idl, patches/0013)
-// adds for draco-uv's texture-coordinate coders:
+// adds for draco-uv's texture-coordinate and tangent coders:
 //   DracoUvOptions  one TEX_COORD attribute's coding, by draco_encoder's
 //                   flag names (-uv_pred, -uv_seams, -uv_anchors, -uv_rmse,
-//                   -uv_texels);
+//                   -uv_texels), and that of the mesh's tangents which
+//                   follow it (-tangent_pred, -qtg);
 //   DracoUvModule   the module-wide default for every TEX_COORD attribute
 //                   without a setting of its own, a count of the encodes
 //                   that wrote draco-uv ids, and the glTF writes under way
-//                   (in which -uv_pred auto pays for the glTF extension as
-//                   in the native glTF encoder, gltf/uv_gltf.h);
+//                   (in which -uv_pred and -tangent_pred auto pay for the
+//                   glTF extension as in the native glTF encoder,
+//                   gltf/uv_gltf.h);
 //   UvWebEncoder    the part of the JS Encoder and ExpertEncoder that holds
 //                   their per-attribute settings and encodes: stock Draco's
 //                   own path when no setting applies (byte-identical
@@ -68,6 +70,15 @@ class DracoUvOptions {
   // chooses among the lossless schemes only (options/uv_error_target.h).
   bool SetRmse(double rmse);
   bool SetTexels(double texels, long texture_size);
+  // A -tangent_pred name for the mesh's tangents (TANGENT attributes, and
+  // the GENERIC ones with tangent values, as glTF-Transform and
+  // gltf-pipeline hand glTF's TANGENT to Draco: TangentAttributeIds());
+  // "" is Draco's own prediction.
+  bool SetTangentPrediction(const char *name);
+  // -qtg: quantization bits of the tangents where the encoder does not
+  // quantize them already; 0 leaves it to -tangent_pred's default (8 bits
+  // for the geometric names).
+  bool SetTangentQuantization(long bits);
   // Why the last failing Set* failed (listing the valid values), else "".
   const char *GetErrorMessage() const { return error_.c_str(); }
 
@@ -102,9 +113,10 @@ class UvWebModuleState {
 
   // A glTF writer's encodes (KHR_draco_mesh_compression primitives of one
   // file) begin: until one of them writes draco-uv ids, the file does not
-  // carry kUvGltfExtension, so -uv_pred auto keeps draco-uv's schemes only
-  // if they pay for it (KeepDracoUvOnlyIfItPaysForTheExtension()). A second
-  // Begin starts a new file.
+  // carry kUvGltfExtension, so the schemes -uv_pred auto and -tangent_pred
+  // auto choose are kept only if they pay for it
+  // (KeepDracoUvOnlyIfItPaysForTheExtension()). A second Begin starts a new
+  // file.
   void BeginGltfWrite() { gltf_write_ = GltfWrite::kExtensionNotYetPaid; }
   void EndGltfWrite() { gltf_write_ = GltfWrite::kNone; }
   // True in a glTF write whose encodes have not written draco-uv ids yet.
@@ -180,11 +192,14 @@ class UvWebEncoder {
 
  private:
   // The options of each TEX_COORD attribute of |mesh| that has any: its
-  // own, else the per-type ones, else the module default.
+  // own, else the per-type ones, else the module default. The tangent
+  // options ride on them (ConfigureUvCompression()), so tangents are
+  // predicted in meshes with texture coordinates, which the prediction
+  // reads anyway.
   std::map<int, UvCompressionOptions> OptionsFor(const Mesh &mesh) const;
   // Configures a copy of |options| for |mesh| and encodes with it; in a
-  // glTF write whose file does not carry the glTF extension yet, -uv_pred
-  // auto keeps draco-uv ids only if they pay for it.
+  // glTF write whose file does not carry the glTF extension yet, the
+  // draco-uv ids that only auto chose are kept only if they pay for it.
   Status EncodeConfigured(const Mesh &mesh, const EncoderOptions &options,
                           EncoderBuffer *out);
   // Records the outcome of an encode and returns |status|.

@@ -26,6 +26,13 @@
 //   (Decoder.SkipAttributeTransform), so the quantized integers the
 //   bitstream codes are compared and no floating point arithmetic.
 //
+// The tangent golden files (testdata/golden/tangent_variants.tsv's rows on
+// the *_tangents meshes) are rows of expected.tsv too; beyond their digests,
+// every row of tangent_variants.tsv must have a golden file of each tangent
+// mesh, and each tangent prediction's file must decode to the tangents
+// (GENERIC) of stock coding at the same -qtg (tangent_draco_qtgN), as the
+// prediction is lossless.
+//
 // The lossy Laplacian golden files (testdata/golden/lossy/) have no expected
 // values (their decoded floats may differ between builds); each must decode,
 // and its digests (quantized, and dequantized as draco_uv_digest
@@ -146,6 +153,43 @@ function digest(draco, data, dequantized = false) {
   }
 }
 
+// The tangent golden files' coverage and losslessness (above); |decoded|
+// maps each file of expected.tsv to its decoded digest line. Returns the
+// problems found.
+function checkTangentFiles(goldenDir, decoded) {
+  const variantsFile = path.join(goldenDir, 'tangent_variants.tsv');
+  if (!fs.existsSync(variantsFile)) return [];
+  const variants = fs.readFileSync(variantsFile, 'utf8').split('\n')
+      .filter((line) => line && !line.startsWith('#'))
+      .map((line) => line.split('\t')[0]);
+  const meshes = new Set([...decoded.keys()]
+      .filter((file) => /^[^.]*_tangents\./.test(file))
+      .map((file) => file.split('.')[0]));
+  const problems = [];
+  if (meshes.size === 0) problems.push('no tangent golden files');
+  const tangents = (line) => (/ GENERIC:\S+x4=(\S+)/.exec(line) || [])[1];
+  for (const mesh of meshes) {
+    for (const variant of variants) {
+      const file = `${mesh}.${variant}.drc`;
+      const stock = `${mesh}.${variant.replace(/^tangent_[a-z]+_/,
+                                               'tangent_draco_')}.drc`;
+      if (!decoded.has(file)) {
+        problems.push(`${file}: tangent_variants.tsv row without a golden ` +
+                      'file in expected.tsv');
+      } else if (!tangents(decoded.get(file)) ||
+                 tangents(decoded.get(file)) !==
+                     tangents(decoded.get(stock) || '')) {
+        problems.push(`${file}: tangents decode to ` +
+                      `${tangents(decoded.get(file))}, stock coding's ` +
+                      `(${stock}) to ${tangents(decoded.get(stock) || '')}`);
+      }
+    }
+  }
+  console.log(`tangent golden files: ${meshes.size} meshes x ` +
+              `${variants.length} rows of tangent_variants.tsv checked`);
+  return problems;
+}
+
 async function main() {
   const args = process.argv.slice(2);
   const withoutLaplacian = args[0] === '--without-laplacian';
@@ -163,6 +207,7 @@ async function main() {
   let failed = 0;
   const expected = fs.readFileSync(path.join(goldenDir, 'expected.tsv'),
                                    'utf8').split('\n').filter(Boolean);
+  const decoded = new Map();
   for (const row of expected) {
     const [file, want] = row.split('\t');
     let got;
@@ -171,6 +216,7 @@ async function main() {
     } catch (error) {
       got = `error: ${error.message}`;
     }
+    decoded.set(file, got);
     if (got === want) {
       ++passed;
       console.log(`ok ${file}`);
@@ -178,6 +224,10 @@ async function main() {
       ++failed;
       console.log(`FAIL ${file}\n  expected ${want}\n  decoded  ${got}`);
     }
+  }
+  for (const problem of checkTangentFiles(goldenDir, decoded)) {
+    ++failed;
+    console.log(`FAIL ${problem}`);
   }
   // Lossy files: decoding must succeed (the values are not pinned), or,
   // without the Laplacian coder, fail with an error.

@@ -49,7 +49,8 @@
  * The CLI (node_modules/.bin/gltf-transform) with --config
  * node_modules/draco3d-uv/gltf-transform.config.mjs: `draco` writes a marked
  * file smaller than the CLI's own (npm draco3dgltf) with the same triangles,
- * DRACO_UV_PRED=draco DRACO_UV_SEAMS=draco an unmarked one, Box an unmarked
+ * DRACO_UV_PRED=draco DRACO_UV_SEAMS=draco DRACO_TANGENT_PRED=draco an
+ * unmarked one, Box an unmarked
  * one; `inspect` reads the marked file with the config and fails without it;
  * an unknown DRACO_UV_PRED fails naming the valid names.
  * Prints the sizes (bytes) per asset and setting.
@@ -317,7 +318,8 @@ function runCli(args, extraEnv = {}) {
 async function checkCli(inputs, ctx) {
   const config = ['--config',
                   'node_modules/draco3d-uv/gltf-transform.config.mjs'];
-  const stockEnv = {DRACO_UV_PRED: 'draco', DRACO_UV_SEAMS: 'draco'};
+  const stockEnv = {DRACO_UV_PRED: 'draco', DRACO_UV_SEAMS: 'draco',
+                    DRACO_TANGENT_PRED: 'draco'};
   for (const input of inputs.filter((i) => i.large || !i.uv)) {
     const out = (tag) => path.join(work, `${input.name}.cli.${tag}.glb`);
     await expect(`CLI ${input.name}`, async () => {
@@ -328,10 +330,12 @@ async function checkCli(inputs, ctx) {
       ];
       const files = {};
       for (const [tag, extra, vars] of runs) {
-        // The config's defaults (auto + context) unless |vars| say else.
+        // The config's defaults (auto + context, tangents auto) unless
+        // |vars| say else.
         const run = runCli(['draco', input.glb, out(tag), ...extra],
                            {DRACO_UV_PRED: undefined,
-                            DRACO_UV_SEAMS: undefined, ...vars});
+                            DRACO_UV_SEAMS: undefined,
+                            DRACO_TANGENT_PRED: undefined, ...vars});
         check(run.status === 0, `draco ${tag} exited ${run.status}: ` +
               run.stderr + run.stdout);
         files[tag] = fs.readFileSync(out(tag));
@@ -339,7 +343,8 @@ async function checkCli(inputs, ctx) {
       const marked = hasMarker(parseGlb(files.ours).json);
       check(marked === input.uv, `--config: marker ${marked}`);
       check(!hasMarker(parseGlb(files['ours-stock']).json),
-            'DRACO_UV_PRED=draco DRACO_UV_SEAMS=draco: marked');
+            'DRACO_UV_PRED=draco DRACO_UV_SEAMS=draco ' +
+            'DRACO_TANGENT_PRED=draco: marked');
       check(!hasMarker(parseGlb(files.cli).json), 'plain CLI: marked');
       const digests = [];
       for (const tag of ['cli', 'ours', 'ours-stock']) {

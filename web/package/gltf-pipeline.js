@@ -2,18 +2,22 @@
  * @fileoverview gltf-pipeline (4.x) with draco3d-uv: processGltf, processGlb,
  * gltfToGlb and glbToGltf as gltf-pipeline exports them, whose Draco stage
  * uses this package's encoder and decoder modules and codes texture
- * coordinates with draco-uv's coders chosen by
- * options.dracoOptions.texCoordCompression:
+ * coordinates and tangents with draco-uv's coders chosen by
+ * options.dracoOptions.texCoordCompression and tangentCompression:
  *
  *   const {gltfToGlb} = require('draco3d-uv/gltf-pipeline');
  *   const {glb} = await gltfToGlb(gltf, {dracoOptions: {
  *     compressionLevel: 7,
  *     texCoordCompression: {prediction: 'auto', seams: 'context'},
+ *     tangentCompression: {prediction: 'auto'},
  *   }});
  *
  * (prediction, seams, anchors: draco_encoder's -uv_pred / -uv_seams /
- * -uv_anchors names; without texCoordCompression the coding is stock
- * Draco 1.5.5's). When some primitive was encoded with draco-uv's ids, the
+ * -uv_anchors names; tangentCompression {prediction, quantizationBits}:
+ * -tangent_pred's and -qtg, for TANGENT, which gltf-pipeline itself leaves
+ * unquantized: with tangentCompression the tangents are quantized with
+ * quantizationBits, by default 8 as in draco_transcoder; without these
+ * options the coding is stock Draco 1.5.5's). When some primitive was encoded with draco-uv's ids, the
  * glTF gets DRACOUV_attribute_compression in extensionsUsed and
  * extensionsRequired (also with uncompressedFallback: loaders with a stock
  * Draco decoder would otherwise try the Draco data and fail). The stage's
@@ -91,7 +95,10 @@ function addMarker(gltf) {
   }
 }
 
-/** gltf-pipeline's compressDracoMeshes, with texCoordCompression. */
+/**
+ * gltf-pipeline's compressDracoMeshes, with texCoordCompression and
+ * tangentCompression.
+ */
 function wrapDracoStage(compressDracoMeshes) {
   let queue = Promise.resolve();
   async function compressOne(gltf, options) {
@@ -102,9 +109,11 @@ function wrapDracoStage(compressDracoMeshes) {
     }
     const uvModule = new encoderModule.DracoUvModule();
     try {
-      const {texCoordCompression} = options.dracoOptions || {};
-      if (texCoordCompression) {
-        draco3d.setUvDefault(encoderModule, texCoordCompression);
+      const {texCoordCompression, tangentCompression} =
+          options.dracoOptions || {};
+      if (texCoordCompression || tangentCompression) {
+        draco3d.setUvDefault(encoderModule, texCoordCompression,
+                             tangentCompression);
       } else {
         uvModule.ClearDefault();
       }

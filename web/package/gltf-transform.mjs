@@ -2,7 +2,7 @@
  * @fileoverview glTF-Transform support for draco3d-uv: the Extension class of
  * DRACOUV_attribute_compression and registerDracoUv(), which sets up a
  * glTF-Transform I/O to read and write files with draco-uv's texture
- * coordinate coders.
+ * coordinate and tangent coders.
  *
  * DRACOUV_attribute_compression has no JSON object of its own (like
  * KHR_mesh_quantization): listed in extensionsUsed and extensionsRequired,
@@ -21,8 +21,9 @@
  *    run between DracoUvModule.BeginGltfWrite() and EndGltfWrite(), so that
  *    with prediction 'auto' the first primitive that would need the marker
  *    keeps draco-uv's coding only if it saves more than the marker's JSON
- *    costs (76 bytes), as draco-uv's native glTF encoder does: auto never
- *    makes a file bigger than stock coding.
+ *    costs (76 bytes), as draco-uv's native glTF encoder does: auto (of
+ *    texture coordinates or tangents) never makes a file bigger than stock
+ *    coding.
  *
  * The extension must be present on a Document for its write hook to run:
  * registerDracoUv() adds it to every Document the I/O writes; without that
@@ -140,21 +141,30 @@ export class DracoUvAttributeCompression extends Extension {
  *
  * @param {!Object} io a glTF-Transform PlatformIO.
  * @param {{texCoordCompression: (Object|undefined),
+ *          tangentCompression: (Object|undefined),
  *          decoderModule: (Object|undefined),
  *          encoderModule: (Object|undefined)}=} options
  *     texCoordCompression: {prediction, seams, anchors} by draco_encoder's
  *     -uv_pred / -uv_seams / -uv_anchors names, the coding of every
  *     TEXCOORD_n this I/O writes (default: none, stock Draco coding);
+ *     tangentCompression: {prediction, quantizationBits} by -tangent_pred
+ *     and -qtg, the coding of every TANGENT this I/O writes, predicted from
+ *     the primitive's first TEX_COORD attribute (default: none, stock
+ *     Draco coding; draco()'s quantizeGeneric, 12 bits by default,
+ *     quantizes the tangents, so quantizationBits applies only with
+ *     quantizeGeneric 0);
  *     decoderModule / encoderModule: modules to use instead of new ones.
  * @return {!Promise<!Object>} |io|; rejects with the encoder's message when
- *     a name in texCoordCompression is unknown.
+ *     a name in texCoordCompression or tangentCompression is unknown.
  */
 export async function registerDracoUv(io, options = {}) {
   const [decoderModule, encoderModule] = await Promise.all([
     options.decoderModule || draco3d.createDecoderModule({}),
     options.encoderModule ||
-        draco3d.createEncoderModule(
-            {texCoordCompression: options.texCoordCompression}),
+        draco3d.createEncoderModule({
+          texCoordCompression: options.texCoordCompression,
+          tangentCompression: options.tangentCompression,
+        }),
   ]);
   io.registerExtensions([KHRDracoMeshCompression, DracoUvAttributeCompression])
       .registerDependencies({

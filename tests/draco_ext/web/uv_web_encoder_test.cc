@@ -15,7 +15,9 @@
 // The JS encoder API's C++ side (draco_ext/web/uv_web_encoder.h): names
 // checked with the valid ones listed, the module default, per-type and
 // per-attribute settings and their precedence, stock output without
-// settings, the same bytes as draco_encoder's path with them, and a truthful
+// settings, the same bytes as draco_encoder's path with them (tangent
+// settings included, with the tangents typed TANGENT as draco_encoder reads
+// glTF or GENERIC as the JS pipelines hand them over), and a truthful
 // UsedDracoUvCoding() and encode count. Each test has its own module state.
 #include "draco_ext/web/uv_web_encoder.h"
 
@@ -25,6 +27,7 @@
 #include <vector>
 
 #include "draco/compression/config/compression_shared.h"
+#include "draco_ext/options/tangent_prediction_options.h"
 #include "draco_ext/options/uv_encode_settings.h"
 #include "gtest/gtest.h"
 #include "tests/draco_uv_test_utils.h"
@@ -343,6 +346,64 @@ TEST(UvWebEncoderTest, UsedDracoUvCodingTellsTheTruth) {
     expected_count += c.used ? 1 : 0;
   }
   EXPECT_EQ(state.num_encodes_with_draco_uv_ids(), expected_count);
+}
+
+// SetTangentPrediction() and SetTangentQuantization() are draco_encoder's
+// -tangent_pred and -qtg: the same bytes natively, with the tangents as
+// TANGENT or as GENERIC, alone or with a UV prediction; bad values refused.
+TEST(UvWebEncoderTest, TangentSettingsWriteDracoEncodersBytes) {
+  DracoUvOptions checked;
+  EXPECT_FALSE(checked.SetTangentPrediction("mikkt"));
+  EXPECT_NE(std::string(checked.GetErrorMessage()).find("mikktspace"),
+            std::string::npos)
+      << checked.GetErrorMessage();
+  for (const long bad : {-1L, 22L, 1L << 40}) {
+    EXPECT_FALSE(checked.SetTangentQuantization(bad)) << bad;
+    EXPECT_NE(std::string(checked.GetErrorMessage()), "");
+  }
+  EXPECT_TRUE(checked.options().tangent.IsStock());
+  for (const std::string name :
+       {"small_torus_uv_tangents.glb", "small_cube_sphere_tangents.glb"}) {
+    const std::unique_ptr<Mesh> read = LoadMesh(UvTestdataPath(name));
+    Mesh generic;
+    generic.Copy(*read);
+    const int tangent_id = TangentAttributeIds(*read).at(0);
+    generic.attribute(tangent_id)
+        ->set_attribute_type(GeometryAttribute::GENERIC);
+    for (const Mesh *mesh : std::vector<const Mesh *>{read.get(), &generic}) {
+      for (const std::string uv : {"", "auto"}) {
+        for (const std::string tangent : {"auto", "mikktspace", "geometric"}) {
+          for (const int qtg : {0, 10}) {
+            UvWebModuleState state;
+            DracoUvModule module(&state);
+            DracoUvOptions options = Options(uv);
+            ASSERT_TRUE(options.SetTangentPrediction(tangent.c_str()));
+            ASSERT_TRUE(options.SetTangentQuantization(qtg));
+            ASSERT_TRUE(module.SetDefault(&options))
+                << module.GetErrorMessage();
+            UvWebEncoder web(&state);
+            UvEncodeSettings settings;
+            settings.uv = options.options();
+            EncoderBuffer native;
+            ASSERT_TRUE(EncodeMeshWithSettings(*mesh, settings, &native).ok());
+            const std::string what =
+                name + " " + uv + " " + tangent + " " + std::to_string(qtg) +
+                " " + (mesh == read.get() ? "TANGENT" : "GENERIC");
+            const std::vector<char> bytes = EncodeWithEncoder(&web, *mesh);
+            EXPECT_EQ(bytes, Bytes(native)) << what;
+            EXPECT_NE(std::string(web.GetUvCompressionMessage())
+                          .find("Tangent prediction"),
+                      std::string::npos)
+                << what << ": " << web.GetUvCompressionMessage();
+            // Named geometric schemes write draco-uv ids on these meshes.
+            if (tangent != "auto") {
+              EXPECT_TRUE(web.UsedDracoUvCoding()) << what;
+            }
+          }
+        }
+      }
+    }
+  }
 }
 
 TEST(UvWebEncoderTest, AFailedEncodeSaysWhy) {

@@ -17,7 +17,10 @@
 // choice as the native glTF encoder (ConfigureUvCompressionForGltf()) on the
 // first primitive that would need the glTF extension, so a file never grows
 // by the marker without saving more; later encodes of the write ride on the
-// marker; outside a write, and for other predictions, nothing changes.
+// marker; outside a write, and for other predictions, nothing changes. The
+// same for -tangent_pred auto on meshes with tangents (as glTF pipelines
+// hand them over, GENERIC), alone and with -uv_pred auto, while a named
+// tangent scheme always keeps draco-uv ids, as natively.
 #include <memory>
 #include <set>
 #include <string>
@@ -26,6 +29,7 @@
 
 #include "draco/compression/draco_compression_options.h"
 #include "draco_ext/gltf/uv_gltf.h"
+#include "draco_ext/options/tangent_prediction_options.h"
 #include "draco_ext/web/uv_web_encoder.h"
 #include "gtest/gtest.h"
 #include "tests/draco_uv_test_utils.h"
@@ -92,6 +96,29 @@ std::vector<char> EncodeAsNativeGltf(Mesh *mesh, const std::string &prediction,
   return Bytes(buffer);
 }
 
+// The same with the tangent prediction |tangent| (and |uv|) on a mesh with
+// tangents.
+std::vector<char> EncodeTangentsAsNativeGltf(Mesh *mesh,
+                                             const DracoUvOptions &options,
+                                             bool *marked) {
+  DracoCompressionOptions compression;
+  compression.uv = options.options();
+  mesh->SetCompressionOptions(compression);
+  Encoder settings;
+  SetUpLikeGltfTransform(&settings);
+  ExpertEncoder encoder(*mesh);
+  encoder.Reset(settings.CreateExpertEncoderOptions(*mesh));
+  std::set<std::string> used, required;
+  EXPECT_TRUE(
+      ConfigureUvCompressionForGltf(*mesh, nullptr, encoder, &used, &required)
+          .ok());
+  *marked = required.count(kUvGltfExtension) > 0;
+  EncoderBuffer buffer;
+  EXPECT_TRUE(encoder.EncodeToBuffer(&buffer).ok());
+  mesh->SetCompressionOptions(DracoCompressionOptions());
+  return Bytes(buffer);
+}
+
 std::vector<char> StockBytes(const Mesh &mesh) {
   UvWebModuleState state;
   UvWebEncoder web(&state);
@@ -131,6 +158,48 @@ TEST(UvWebGltfWriteTest, AutoMakesTheNativeGltfEncodersChoice) {
   }
   EXPECT_GT(kept, 0);
   EXPECT_GT(dropped, 0);
+}
+
+// -tangent_pred auto (alone and with -uv_pred auto) and mikktspace as the
+// first primitive of a glTF write: the native glTF encoder's bytes and
+// marking; auto never exceeds stock coding with the marker counted, the
+// named scheme always marks.
+TEST(UvWebGltfWriteTest, TangentPredictionMakesTheNativeGltfEncodersChoice) {
+  for (const std::string name :
+       {"small_torus_uv_tangents.glb", "small_cube_sphere_tangents.glb",
+        "crane_spot_tangents.glb"}) {
+    std::unique_ptr<Mesh> mesh = LoadMesh(UvTestdataPath(name));
+    ASSERT_NE(mesh, nullptr);
+    for (const int att_id : TangentAttributeIds(*mesh)) {
+      mesh->attribute(att_id)->set_attribute_type(GeometryAttribute::GENERIC);
+    }
+    for (const std::string uv : {"", "auto"}) {
+      for (const std::string tangent : {"auto", "mikktspace"}) {
+        UvWebModuleState state;
+        DracoUvModule module(&state);
+        DracoUvOptions options = Options(uv);
+        ASSERT_TRUE(options.SetTangentPrediction(tangent.c_str()));
+        ASSERT_TRUE(module.SetDefault(&options));
+        module.BeginGltfWrite();
+        UvWebEncoder web(&state);
+        const std::vector<char> ours = EncodeThroughWeb(&web, *mesh);
+        module.EndGltfWrite();
+        const std::string what = name + " " + uv + " " + tangent;
+        bool marked = false;
+        EXPECT_EQ(ours,
+                  EncodeTangentsAsNativeGltf(mesh.get(), options, &marked))
+            << what;
+        EXPECT_EQ(web.UsedDracoUvCoding(), marked) << what;
+        if (tangent == "mikktspace") {
+          EXPECT_TRUE(marked) << what;
+        } else {
+          EXPECT_LE(ours.size() + (marked ? kUvGltfExtensionJsonBytes : 0),
+                    StockBytes(*mesh).size())
+              << what;
+        }
+      }
+    }
+  }
 }
 
 // A small mesh whose draco-uv saving does not pay for the marker, and a
