@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "draco/core/encoder_buffer.h"
@@ -158,11 +159,16 @@ std::vector<PredictionSchemeMethod> AutoCandidates() {
   return candidates;
 }
 
-// -uv_pred auto's choice, with its summary line.
+// -uv_pred auto's choice, with its summary line; sets |encoded_size|, if not
+// null, to the size of the file with it.
 StatusOr<std::string> ChooseSmallestFor(const Mesh &mesh, int att_id,
-                                        ExpertEncoder *encoder) {
+                                        ExpertEncoder *encoder,
+                                        std::optional<size_t> *encoded_size) {
   DRACO_ASSIGN_OR_RETURN(const UvAutoChoice choice,
                          ChooseSmallestUvPrediction(mesh, att_id, encoder));
+  if (encoded_size != nullptr) {
+    *encoded_size = choice.bytes;
+  }
   return "UV prediction (auto): " + UvAttributeLabel(mesh, att_id) + " -> " +
          UvPredictionNameOf(choice.method) + ", " +
          std::to_string(choice.bytes) +
@@ -218,7 +224,10 @@ StatusOr<UvAutoChoice> ChooseSmallestUvPrediction(const Mesh &mesh, int att_id,
 
 StatusOr<std::string> ConfigureUvPredictionOf(
     const UvCompressionOptions &options, const Mesh *mesh, int att_id,
-    ExpertEncoder *encoder) {
+    ExpertEncoder *encoder, std::optional<size_t> *encoded_size) {
+  if (encoded_size != nullptr) {
+    encoded_size->reset();
+  }
   if (options.prediction == UvPrediction::kDraco) {
     return std::string();
   }
@@ -235,7 +244,7 @@ StatusOr<std::string> ConfigureUvPredictionOf(
   }
   DRACO_RETURN_IF_ERROR(CheckCommonSettings(*encoder, att_id));
   if (options.prediction == UvPrediction::kAuto) {
-    return ChooseSmallestFor(*mesh, att_id, encoder);
+    return ChooseSmallestFor(*mesh, att_id, encoder, encoded_size);
   }
   const PredictionSchemeMethod method = UvPredictionMethod(options.prediction);
   DRACO_RETURN_IF_ERROR(CheckSettingsFor(method, *mesh, *encoder, att_id));
@@ -250,7 +259,10 @@ StatusOr<std::string> ConfigureUvPredictionOf(
 
 StatusOr<std::string> ConfigureUvPrediction(
     const UvCompressionOptions &options, const Mesh *mesh,
-    ExpertEncoder *encoder) {
+    ExpertEncoder *encoder, std::optional<size_t> *encoded_size) {
+  if (encoded_size != nullptr) {
+    encoded_size->reset();
+  }
   if (options.prediction == UvPrediction::kDraco) {
     return std::string();
   }
@@ -262,7 +274,8 @@ StatusOr<std::string> ConfigureUvPrediction(
   for (const int att_id : TexCoordAttributeIds(*mesh)) {
     DRACO_ASSIGN_OR_RETURN(
         const std::string line,
-        ConfigureUvPredictionOf(options, mesh, att_id, encoder));
+        ConfigureUvPredictionOf(options, mesh, att_id, encoder,
+                                encoded_size));
     summary += line;
   }
   return summary;

@@ -20,6 +20,7 @@
 #ifndef DRACO_EXT_OPTIONS_UV_PREDICTION_OPTIONS_H_
 #define DRACO_EXT_OPTIONS_UV_PREDICTION_OPTIONS_H_
 
+#include <optional>
 #include <string>
 
 #include "draco/compression/expert_encode.h"
@@ -39,15 +40,20 @@ namespace draco {
 // positions or texture coordinates, NaN or infinite values). Returns a
 // one-line summary per attribute for the tools to print ("" when nothing
 // changed).
+//
+// When |encoded_size| is not null, sets it to the whole file's size with the
+// settings left on |encoder| where a trial encode measured exactly those
+// (kAuto's choice for the last TEX_COORD attribute), else to nullopt, so
+// that the tangents' trial encodes can reuse it.
 StatusOr<std::string> ConfigureUvPrediction(
     const UvCompressionOptions &options, const Mesh *mesh,
-    ExpertEncoder *encoder);
+    ExpertEncoder *encoder, std::optional<size_t> *encoded_size = nullptr);
 
 // The same for the one TEX_COORD attribute |att_id| of |mesh| (an error for
 // any other attribute), leaving the others untouched.
 StatusOr<std::string> ConfigureUvPredictionOf(
     const UvCompressionOptions &options, const Mesh *mesh, int att_id,
-    ExpertEncoder *encoder);
+    ExpertEncoder *encoder, std::optional<size_t> *encoded_size = nullptr);
 
 // -uv_pred auto's choice for one TEX_COORD attribute.
 struct UvAutoChoice {
