@@ -63,11 +63,23 @@ struct UvAutoChoice {
   int num_encodes = 0;     // Trial encodes it took.
 };
 
+// The scheme that Draco 1.5.5 picks itself for TEX_COORD attribute |att_id|
+// of |mesh| under |options| (SelectPredictionMethod() in
+// prediction_scheme_encoder_factory.cc): TEX_COORDS_PORTABLE at speeds 0 to
+// 3 for 2 components with positions integral or quantized to at most 21
+// bits (twice those plus the UVs' bits under 64), else parallelogram at
+// speeds 2 to 7 or under 40 points, constrained multi-parallelogram at 0
+// and 1, and difference coding from speed 8.
+PredictionSchemeMethod StockUvPrediction(const Mesh &mesh,
+                                         const EncoderOptions &options,
+                                         int att_id);
+
 // -uv_pred auto for TEX_COORD attribute |att_id| of |mesh| on |encoder|,
 // whose settings (-cl, -qt) must already allow -uv_pred: encodes once per
 // lossless candidate the settings allow and leaves the smallest set,
 // counting weighted_multi (slower to decode) half a bit per UV vertex
-// larger. Stock Draco's choice comes first and wins ties.
+// larger. Stock Draco's choice comes first and wins ties; the candidate
+// that StockUvPrediction() names is not encoded again.
 StatusOr<UvAutoChoice> ChooseSmallestUvPrediction(const Mesh &mesh, int att_id,
                                                   ExpertEncoder *encoder);
 
