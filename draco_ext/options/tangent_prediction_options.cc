@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "draco/core/encoder_buffer.h"
 #include "draco/draco_features.h"
@@ -63,9 +64,12 @@ bool HasFiniteValues(const PointAttribute &att) {
   return true;
 }
 
+int QuantizationBits(const ExpertEncoder &encoder, int att_id) {
+  return encoder.options().GetAttributeInt(att_id, "quantization_bits", -1);
+}
+
 bool IsQuantized(const ExpertEncoder &encoder, int att_id) {
-  return encoder.options().GetAttributeInt(att_id, "quantization_bits", -1) >
-         0;
+  return QuantizationBits(encoder, att_id) > 0;
 }
 
 // What the first attribute of |type| lacks for the prediction, or "".
@@ -109,13 +113,21 @@ std::string TangentLabel(const Mesh &mesh, int att_id) {
 }
 
 // -tangent_pred auto for |att_id|, set to the geometric scheme: keeps it
-// where it makes the file smaller, else stock coding.
+// where it makes the file smaller, else stock coding. |encoded_size|, when
+// it holds the file's size with |att_id| coded stock and the other settings
+// as they are, spares the stock trial encode (the geometric kinds option
+// that ConfigureOne() sets is read by the geometric scheme only); it is set
+// to the size with the coding kept.
 StatusOr<std::string> KeepSmaller(const Mesh &mesh, int att_id,
-                                  ExpertEncoder *encoder) {
+                                  ExpertEncoder *encoder,
+                                  std::optional<size_t> *encoded_size) {
   const StatusOr<size_t> geometric = EncodedSize(encoder);
   DRACO_RETURN_IF_ERROR(
       encoder->SetAttributePredictionScheme(att_id, PREDICTION_UNDEFINED));
-  DRACO_ASSIGN_OR_RETURN(const size_t stock, EncodedSize(encoder));
+  if (!encoded_size->has_value()) {
+    DRACO_ASSIGN_OR_RETURN(*encoded_size, EncodedSize(encoder));
+  }
+  const size_t stock = encoded_size->value();
   const std::string label =
       "Tangent prediction (auto): " + TangentLabel(mesh, att_id) + " -> ";
   if (!geometric.ok() || geometric.value() >= stock) {
@@ -127,27 +139,38 @@ StatusOr<std::string> KeepSmaller(const Mesh &mesh, int att_id,
   }
   DRACO_RETURN_IF_ERROR(encoder->SetAttributePredictionScheme(
       att_id, MESH_PREDICTION_GEOMETRIC_TANGENT));
+  *encoded_size = geometric.value();
   return label + "geometric, " + std::to_string(geometric.value()) +
          " bytes in all (draco: " + std::to_string(stock) + ")\n";
 }
 
 // |options| for tangent attribute |att_id| (quantization already set).
+// |encoded_size| holds the file's size with |encoder|'s settings where
+// known; it is kept up to date.
 StatusOr<std::string> ConfigureOne(const TangentCompressionOptions &options,
                                    const Mesh &mesh, int att_id,
-                                   ExpertEncoder *encoder) {
+                                   ExpertEncoder *encoder,
+                                   std::optional<size_t> *encoded_size) {
   const std::string reason =
       WhyNoGeometricTangentPrediction(mesh, *encoder, att_id);
   if (!reason.empty()) {
     return "Tangent prediction: " + TangentLabel(mesh, att_id) +
            " keeps stock coding: " + reason + "\n";
   }
+  if (encoder->options().GetAttributeInt(att_id, "prediction_scheme",
+                                         PREDICTION_UNDEFINED) !=
+      PREDICTION_UNDEFINED) {
+    // Not the stock coding that KeepSmaller() measures.
+    encoded_size->reset();
+  }
   DRACO_RETURN_IF_ERROR(encoder->SetAttributePredictionScheme(
       att_id, MESH_PREDICTION_GEOMETRIC_TANGENT));
   SetGeometricTangentKinds(GeometricTangentKindsOf(options.prediction), att_id,
                            &encoder->options());
   if (options.prediction == TangentPrediction::kAuto) {
-    return KeepSmaller(mesh, att_id, encoder);
+    return KeepSmaller(mesh, att_id, encoder, encoded_size);
   }
+  encoded_size->reset();
   return "Tangent prediction: " + TangentLabel(mesh, att_id) + " -> " +
          TangentPredictionNameOf(options.prediction) + "\n";
 }
@@ -258,7 +281,7 @@ Status CheckTangentValues(const TangentCompressionOptions &options,
 
 StatusOr<std::string> ConfigureTangentPrediction(
     const TangentCompressionOptions &options, const Mesh *mesh,
-    ExpertEncoder *encoder) {
+    ExpertEncoder *encoder, std::optional<size_t> encoded_size) {
   DRACO_RETURN_IF_ERROR(CheckTangentCompressionOptions(options));
   if (options.IsStock()) {
     return std::string();
@@ -269,17 +292,22 @@ StatusOr<std::string> ConfigureTangentPrediction(
   DRACO_RETURN_IF_ERROR(CheckTangentValues(options, mesh));
   std::string summary;
   for (const int att_id : TangentAttributeIds(*mesh)) {
+    const int bits = QuantizationBits(*encoder, att_id);
     if (options.quantization_bits.has_value()) {
       encoder->SetAttributeQuantization(att_id, *options.quantization_bits);
     } else if (!IsQuantized(*encoder, att_id)) {
       encoder->SetAttributeQuantization(
           att_id, TangentCompressionOptions::kDefaultQuantizationBits);
     }
+    if (QuantizationBits(*encoder, att_id) != bits) {
+      encoded_size.reset();
+    }
     if (options.prediction == TangentPrediction::kDraco) {
       continue;
     }
-    DRACO_ASSIGN_OR_RETURN(const std::string line,
-                           ConfigureOne(options, *mesh, att_id, encoder));
+    DRACO_ASSIGN_OR_RETURN(
+        const std::string line,
+        ConfigureOne(options, *mesh, att_id, encoder, &encoded_size));
     summary += line;
   }
   return summary;

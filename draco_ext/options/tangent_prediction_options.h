@@ -20,6 +20,7 @@
 #ifndef DRACO_EXT_OPTIONS_TANGENT_PREDICTION_OPTIONS_H_
 #define DRACO_EXT_OPTIONS_TANGENT_PREDICTION_OPTIONS_H_
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -70,10 +71,16 @@ Status CheckTangentValues(const TangentCompressionOptions &options,
 // smaller (one trial encode each). kDraco with no -qtg leaves |encoder|
 // untouched. Returns a summary line per tangent attribute ("" when nothing
 // changed); fails on a point cloud and on tangents with NaN or infinite
-// values, which Draco's quantization cannot code either.
+// values, which Draco's quantization cannot code either. |encoded_size|,
+// the whole file's size with |encoder|'s settings as they are when known
+// (ConfigureUvPrediction() measures it for -uv_pred auto), spares kAuto its
+// stock trial encodes: with the tangents coded stock and their quantization
+// unchanged, those settings are the stock trial's, and each trial then
+// measures the settings it leaves for the next tangent attribute.
 StatusOr<std::string> ConfigureTangentPrediction(
     const TangentCompressionOptions &options, const Mesh *mesh,
-    ExpertEncoder *encoder);
+    ExpertEncoder *encoder,
+    std::optional<size_t> encoded_size = std::nullopt);
 
 }  // namespace draco
 

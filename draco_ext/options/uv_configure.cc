@@ -14,6 +14,8 @@
 //
 #include "draco_ext/options/uv_configure.h"
 
+#include <optional>
+
 #include "draco_ext/options/uv_error_target.h"
 #include "draco_ext/options/uv_prediction_options.h"
 #include "draco_ext/options/uv_seam_options.h"
@@ -30,13 +32,16 @@ Status ErrorTargetNeedsMesh() {
 }
 
 // The prediction of TEX_COORD attribute |att_id|: by the error target when
-// |options| set one, else by -uv_pred.
-StatusOr<std::string> ConfigurePredictionOf(const UvCompressionOptions &options,
-                                            const Mesh *mesh, int att_id,
-                                            ExpertEncoder *encoder) {
+// |options| set one, else by -uv_pred. Sets |encoded_size| as
+// ConfigureUvPredictionOf() does.
+StatusOr<std::string> ConfigurePredictionOf(
+    const UvCompressionOptions &options, const Mesh *mesh, int att_id,
+    ExpertEncoder *encoder, std::optional<size_t> *encoded_size) {
   if (!options.MaxUvRmse().has_value()) {
-    return ConfigureUvPredictionOf(options, mesh, att_id, encoder);
+    return ConfigureUvPredictionOf(options, mesh, att_id, encoder,
+                                   encoded_size);
   }
+  encoded_size->reset();
   if (mesh == nullptr) {
     return ErrorTargetNeedsMesh();
   }
@@ -54,9 +59,13 @@ StatusOr<std::string> ConfigureUvCompression(
   DRACO_ASSIGN_OR_RETURN(const std::string seams,
                          ConfigureUvSeams(options.seams, mesh, encoder));
   std::string summary = seams;
+  // The file's size with the settings so far, where a trial encode measured
+  // it: spares the tangents' trial encode of those settings.
+  std::optional<size_t> encoded_size;
   if (!options.MaxUvRmse().has_value()) {
-    DRACO_ASSIGN_OR_RETURN(const std::string prediction,
-                           ConfigureUvPrediction(options, mesh, encoder));
+    DRACO_ASSIGN_OR_RETURN(
+        const std::string prediction,
+        ConfigureUvPrediction(options, mesh, encoder, &encoded_size));
     summary += prediction;
   } else if (mesh == nullptr) {
     return ErrorTargetNeedsMesh();
@@ -75,7 +84,7 @@ StatusOr<std::string> ConfigureUvCompression(
   // Last: the tangents' prediction must know how the UVs are coded.
   DRACO_ASSIGN_OR_RETURN(
       const std::string tangents,
-      ConfigureTangentPrediction(options.tangent, mesh, encoder));
+      ConfigureTangentPrediction(options.tangent, mesh, encoder, encoded_size));
   return summary + tangents;
 }
 
@@ -101,14 +110,17 @@ StatusOr<std::string> ConfigureUvCompression(
   DRACO_RETURN_IF_ERROR(CheckTangentValues(tangent, mesh));
   DRACO_ASSIGN_OR_RETURN(std::string summary,
                          ConfigureUvSeams(seam_coding, mesh, encoder));
+  // As in the overload above.
+  std::optional<size_t> encoded_size;
   for (const auto &[att_id, options] : per_attribute) {
     DRACO_ASSIGN_OR_RETURN(
         const std::string prediction,
-        ConfigurePredictionOf(options, mesh, att_id, encoder));
+        ConfigurePredictionOf(options, mesh, att_id, encoder, &encoded_size));
     summary += prediction;
   }
-  DRACO_ASSIGN_OR_RETURN(const std::string tangents,
-                         ConfigureTangentPrediction(tangent, mesh, encoder));
+  DRACO_ASSIGN_OR_RETURN(
+      const std::string tangents,
+      ConfigureTangentPrediction(tangent, mesh, encoder, encoded_size));
   return summary + tangents;
 }
 

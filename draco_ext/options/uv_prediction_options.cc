@@ -16,6 +16,7 @@
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include "draco/core/encoder_buffer.h"
@@ -46,8 +47,12 @@ std::vector<int> TexCoordAttributeIds(const Mesh &mesh) {
   return ids;
 }
 
+int QuantizationBits(const EncoderOptions &options, int att_id) {
+  return options.GetAttributeInt(att_id, "quantization_bits", -1);
+}
+
 int QuantizationBits(const ExpertEncoder &encoder, int att_id) {
-  return encoder.options().GetAttributeInt(att_id, "quantization_bits", -1);
+  return QuantizationBits(encoder.options(), att_id);
 }
 
 // Checks the settings every non-stock -uv_pred needs: Edgebreaker encoding
@@ -145,6 +150,11 @@ bool IsSlowToDecode(PredictionSchemeMethod method) {
   return method == MESH_PREDICTION_TEX_COORDS_WEIGHTED_MULTI;
 }
 
+// The most bits Draco 1.5.5's TEX_COORDS_PORTABLE prediction accepts for
+// floating point positions, and for twice those plus the UVs' bits.
+constexpr int kPortableMaxPositionBits = 21;
+constexpr int kPortableMaxProductBits = 63;
+
 // Candidates of -uv_pred auto: every lossless scheme. Stock Draco's choice
 // comes first so that it wins ties.
 std::vector<PredictionSchemeMethod> AutoCandidates() {
@@ -158,11 +168,16 @@ std::vector<PredictionSchemeMethod> AutoCandidates() {
   return candidates;
 }
 
-// -uv_pred auto's choice, with its summary line.
+// -uv_pred auto's choice, with its summary line; sets |encoded_size|, if not
+// null, to the size of the file with it.
 StatusOr<std::string> ChooseSmallestFor(const Mesh &mesh, int att_id,
-                                        ExpertEncoder *encoder) {
+                                        ExpertEncoder *encoder,
+                                        std::optional<size_t> *encoded_size) {
   DRACO_ASSIGN_OR_RETURN(const UvAutoChoice choice,
                          ChooseSmallestUvPrediction(mesh, att_id, encoder));
+  if (encoded_size != nullptr) {
+    *encoded_size = choice.bytes;
+  }
   return "UV prediction (auto): " + UvAttributeLabel(mesh, att_id) + " -> " +
          UvPredictionNameOf(choice.method) + ", " +
          std::to_string(choice.bytes) +
@@ -181,6 +196,33 @@ std::string UvAttributeLabel(const Mesh &mesh, int att_id) {
          std::to_string(att_id) + ")";
 }
 
+PredictionSchemeMethod StockUvPrediction(const Mesh &mesh,
+                                         const EncoderOptions &options,
+                                         int att_id) {
+  const int speed = options.GetSpeed();
+  if (speed >= kSequentialEncodingSpeed) {
+    return PREDICTION_DIFFERENCE;
+  }
+  const int uv_bits = QuantizationBits(options, att_id);
+  const int pos_id = mesh.GetNamedAttributeId(GeometryAttribute::POSITION);
+  if (speed < 4 && uv_bits != -1 &&
+      mesh.attribute(att_id)->num_components() == 2 && pos_id >= 0) {
+    const int pos_bits = QuantizationBits(options, pos_id);
+    if (IsDataTypeIntegral(mesh.attribute(pos_id)->data_type()) ||
+        (pos_bits > 0 && pos_bits <= kPortableMaxPositionBits &&
+         2 * pos_bits + uv_bits <= kPortableMaxProductBits)) {
+      return MESH_PREDICTION_TEX_COORDS_PORTABLE;
+    }
+  }
+  if (speed >= 8) {
+    return PREDICTION_DIFFERENCE;
+  }
+  if (speed >= 2 || mesh.num_points() < 40) {
+    return MESH_PREDICTION_PARALLELOGRAM;
+  }
+  return MESH_PREDICTION_CONSTRAINED_MULTI_PARALLELOGRAM;
+}
+
 StatusOr<UvAutoChoice> ChooseSmallestUvPrediction(const Mesh &mesh, int att_id,
                                                   ExpertEncoder *encoder) {
   const size_t slow_handicap = (NumUvVertices(mesh, *mesh.attribute(att_id)) +
@@ -188,8 +230,14 @@ StatusOr<UvAutoChoice> ChooseSmallestUvPrediction(const Mesh &mesh, int att_id,
                                kUvVerticesPerByteSlowDecodeMustSave;
   UvAutoChoice choice;
   size_t best_cost = std::numeric_limits<size_t>::max();
+  // The candidate that stock Draco picks itself would encode the same bytes
+  // as the `draco` candidate, which comes first and so wins the tie: its
+  // trial is left out.
+  const PredictionSchemeMethod stock_pick =
+      StockUvPrediction(mesh, encoder->options(), att_id);
   for (const PredictionSchemeMethod method : AutoCandidates()) {
-    if (!CheckSettingsFor(method, mesh, *encoder, att_id).ok()) {
+    if (method == stock_pick ||
+        !CheckSettingsFor(method, mesh, *encoder, att_id).ok()) {
       continue;
     }
     DRACO_RETURN_IF_ERROR(
@@ -218,7 +266,10 @@ StatusOr<UvAutoChoice> ChooseSmallestUvPrediction(const Mesh &mesh, int att_id,
 
 StatusOr<std::string> ConfigureUvPredictionOf(
     const UvCompressionOptions &options, const Mesh *mesh, int att_id,
-    ExpertEncoder *encoder) {
+    ExpertEncoder *encoder, std::optional<size_t> *encoded_size) {
+  if (encoded_size != nullptr) {
+    encoded_size->reset();
+  }
   if (options.prediction == UvPrediction::kDraco) {
     return std::string();
   }
@@ -235,7 +286,7 @@ StatusOr<std::string> ConfigureUvPredictionOf(
   }
   DRACO_RETURN_IF_ERROR(CheckCommonSettings(*encoder, att_id));
   if (options.prediction == UvPrediction::kAuto) {
-    return ChooseSmallestFor(*mesh, att_id, encoder);
+    return ChooseSmallestFor(*mesh, att_id, encoder, encoded_size);
   }
   const PredictionSchemeMethod method = UvPredictionMethod(options.prediction);
   DRACO_RETURN_IF_ERROR(CheckSettingsFor(method, *mesh, *encoder, att_id));
@@ -250,7 +301,10 @@ StatusOr<std::string> ConfigureUvPredictionOf(
 
 StatusOr<std::string> ConfigureUvPrediction(
     const UvCompressionOptions &options, const Mesh *mesh,
-    ExpertEncoder *encoder) {
+    ExpertEncoder *encoder, std::optional<size_t> *encoded_size) {
+  if (encoded_size != nullptr) {
+    encoded_size->reset();
+  }
   if (options.prediction == UvPrediction::kDraco) {
     return std::string();
   }
@@ -262,7 +316,8 @@ StatusOr<std::string> ConfigureUvPrediction(
   for (const int att_id : TexCoordAttributeIds(*mesh)) {
     DRACO_ASSIGN_OR_RETURN(
         const std::string line,
-        ConfigureUvPredictionOf(options, mesh, att_id, encoder));
+        ConfigureUvPredictionOf(options, mesh, att_id, encoder,
+                                encoded_size));
     summary += line;
   }
   return summary;

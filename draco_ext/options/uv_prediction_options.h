@@ -20,6 +20,7 @@
 #ifndef DRACO_EXT_OPTIONS_UV_PREDICTION_OPTIONS_H_
 #define DRACO_EXT_OPTIONS_UV_PREDICTION_OPTIONS_H_
 
+#include <optional>
 #include <string>
 
 #include "draco/compression/expert_encode.h"
@@ -39,15 +40,20 @@ namespace draco {
 // positions or texture coordinates, NaN or infinite values). Returns a
 // one-line summary per attribute for the tools to print ("" when nothing
 // changed).
+//
+// When |encoded_size| is not null, sets it to the whole file's size with the
+// settings left on |encoder| where a trial encode measured exactly those
+// (kAuto's choice for the last TEX_COORD attribute), else to nullopt, so
+// that the tangents' trial encodes can reuse it.
 StatusOr<std::string> ConfigureUvPrediction(
     const UvCompressionOptions &options, const Mesh *mesh,
-    ExpertEncoder *encoder);
+    ExpertEncoder *encoder, std::optional<size_t> *encoded_size = nullptr);
 
 // The same for the one TEX_COORD attribute |att_id| of |mesh| (an error for
 // any other attribute), leaving the others untouched.
 StatusOr<std::string> ConfigureUvPredictionOf(
     const UvCompressionOptions &options, const Mesh *mesh, int att_id,
-    ExpertEncoder *encoder);
+    ExpertEncoder *encoder, std::optional<size_t> *encoded_size = nullptr);
 
 // -uv_pred auto's choice for one TEX_COORD attribute.
 struct UvAutoChoice {
@@ -57,11 +63,23 @@ struct UvAutoChoice {
   int num_encodes = 0;     // Trial encodes it took.
 };
 
+// The scheme that Draco 1.5.5 picks itself for TEX_COORD attribute |att_id|
+// of |mesh| under |options| (SelectPredictionMethod() in
+// prediction_scheme_encoder_factory.cc): TEX_COORDS_PORTABLE at speeds 0 to
+// 3 for 2 components with positions integral or quantized to at most 21
+// bits (twice those plus the UVs' bits under 64), else parallelogram at
+// speeds 2 to 7 or under 40 points, constrained multi-parallelogram at 0
+// and 1, and difference coding from speed 8.
+PredictionSchemeMethod StockUvPrediction(const Mesh &mesh,
+                                         const EncoderOptions &options,
+                                         int att_id);
+
 // -uv_pred auto for TEX_COORD attribute |att_id| of |mesh| on |encoder|,
 // whose settings (-cl, -qt) must already allow -uv_pred: encodes once per
 // lossless candidate the settings allow and leaves the smallest set,
 // counting weighted_multi (slower to decode) half a bit per UV vertex
-// larger. Stock Draco's choice comes first and wins ties.
+// larger. Stock Draco's choice comes first and wins ties; the candidate
+// that StockUvPrediction() names is not encoded again.
 StatusOr<UvAutoChoice> ChooseSmallestUvPrediction(const Mesh &mesh, int att_id,
                                                   ExpertEncoder *encoder);
 

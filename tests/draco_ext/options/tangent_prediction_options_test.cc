@@ -15,12 +15,15 @@
 
 #include <filesystem>
 #include <limits>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "draco/core/draco_test_base.h"
 #include "draco/point_cloud/point_cloud.h"
 #include "draco_ext/options/uv_encode_settings.h"
+#include "draco_ext/options/uv_prediction_options.h"
 #include "prediction_schemes/tangent/geometric_tangent_settings.h"
 #include "tests/draco_uv_test_utils.h"
 
@@ -116,6 +119,58 @@ TEST(TangentPredictionOptionsTest, AutoIsNeverBiggerThanStock) {
     EXPECT_EQ(CornerValues(*a.value(), GeometryAttribute::GENERIC),
               CornerValues(*b.value(), GeometryAttribute::GENERIC))
         << path;
+  }
+}
+
+// -uv_pred auto measures the file with its choice and the tangents coded
+// stock; -tangent_pred auto takes that size for its stock trial instead of
+// encoding again, which changes neither its choice nor its summary (which
+// gives both sizes).
+TEST(TangentPredictionOptionsTest, ReusesTheUvChoicesSizeForStockTangents) {
+  UvCompressionOptions uv;
+  uv.prediction = UvPrediction::kAuto;
+  TangentCompressionOptions tangent;
+  tangent.prediction = TangentPrediction::kAuto;
+  for (const std::string &path : TangentAssets()) {
+    const auto mesh = ReadTestMesh(path);
+    ASSERT_TRUE(mesh.ok()) << path;
+    for (const int speed : {0, 3}) {
+      // draco_transcoder -qp 14 -qt 12 -qn 10 -qtg 8 at -cl 10 and 7.
+      auto make_encoder = [&]() {
+        auto encoder = std::make_unique<ExpertEncoder>(*mesh.value());
+        encoder->SetSpeedOptions(speed, speed);
+        for (int i = 0; i < mesh.value()->num_attributes(); ++i) {
+          const GeometryAttribute::Type type =
+              mesh.value()->attribute(i)->attribute_type();
+          encoder->SetAttributeQuantization(
+              i, type == GeometryAttribute::POSITION    ? 14
+                 : type == GeometryAttribute::TEX_COORD ? 12
+                 : type == GeometryAttribute::NORMAL    ? 10
+                                                        : 8);
+        }
+        return encoder;
+      };
+      const auto reused = make_encoder();
+      std::optional<size_t> size;
+      ASSERT_TRUE(
+          ConfigureUvPrediction(uv, mesh.value().get(), reused.get(), &size)
+              .ok());
+      ASSERT_TRUE(size.has_value()) << path;
+      EncoderBuffer buffer;
+      ASSERT_TRUE(reused->EncodeToBuffer(&buffer).ok());
+      EXPECT_EQ(size.value(), buffer.size()) << path;
+      const auto measured = make_encoder();
+      ASSERT_TRUE(
+          ConfigureUvPrediction(uv, mesh.value().get(), measured.get()).ok());
+      const auto with_size = ConfigureTangentPrediction(
+          tangent, mesh.value().get(), reused.get(), size);
+      const auto without = ConfigureTangentPrediction(
+          tangent, mesh.value().get(), measured.get());
+      ASSERT_TRUE(with_size.ok() && without.ok()) << path;
+      EXPECT_NE(with_size.value().find("(auto)"), std::string::npos)
+          << with_size.value();
+      EXPECT_EQ(with_size.value(), without.value()) << path;
+    }
   }
 }
 

@@ -14,6 +14,10 @@
 //
 #include "draco_ext/options/uv_prediction_options.h"
 
+#include <set>
+#include <string>
+#include <vector>
+
 #include "gtest/gtest.h"
 #include "tests/draco_uv_test_utils.h"
 
@@ -116,6 +120,49 @@ TEST_F(UvPredictionConfigureTest, SummaryNamesTheChosenScheme) {
   ASSERT_TRUE(summary.ok()) << summary.status().error_msg();
   EXPECT_NE(summary.value().find("TEX_COORD 0"), std::string::npos);
   EXPECT_NE(summary.value().find("weighted"), std::string::npos);
+}
+
+// StockUvPrediction() names the scheme that Draco picks itself: setting it
+// encodes the same bytes as leaving the choice to Draco, at every speed with
+// connectivity and with positions that do and do not allow
+// TEX_COORDS_PORTABLE (quantized to 14 or 22 bits, unquantized). -uv_pred
+// auto relies on it to leave out that candidate's trial encode.
+TEST(UvStockPredictionTest, NamesTheSchemeDracoPicks) {
+  std::set<PredictionSchemeMethod> named;
+  for (const std::string &path : TexturedObjPlyMeshPaths()) {
+    const auto mesh = ReadTestMesh(path);
+    ASSERT_TRUE(mesh.ok()) << path;
+    for (const int speed : {0, 1, 2, 3, 4, 7, 8, 9}) {
+      for (const int position_bits : {14, 22, -1}) {
+        ExpertEncoder encoder(*mesh.value());
+        encoder.SetSpeedOptions(speed, speed);
+        for (int i = 0; i < mesh.value()->num_attributes(); ++i) {
+          encoder.SetAttributeQuantization(
+              i, mesh.value()->attribute(i)->attribute_type() ==
+                         GeometryAttribute::POSITION
+                     ? position_bits
+                     : 12);
+        }
+        const int att_id =
+            mesh.value()->GetNamedAttributeId(GeometryAttribute::TEX_COORD);
+        const PredictionSchemeMethod method =
+            StockUvPrediction(*mesh.value(), encoder.options(), att_id);
+        named.insert(method);
+        EncoderBuffer stock, set;
+        ASSERT_TRUE(encoder.EncodeToBuffer(&stock).ok()) << path;
+        ASSERT_TRUE(encoder.SetAttributePredictionScheme(att_id, method).ok());
+        ASSERT_TRUE(encoder.EncodeToBuffer(&set).ok()) << path;
+        EXPECT_EQ(std::vector<char>(stock.data(), stock.data() + stock.size()),
+                  std::vector<char>(set.data(), set.data() + set.size()))
+            << path << " at speed " << speed << ", positions at "
+            << position_bits << " bits";
+      }
+    }
+  }
+  EXPECT_EQ(named, std::set<PredictionSchemeMethod>(
+                       {PREDICTION_DIFFERENCE, MESH_PREDICTION_PARALLELOGRAM,
+                        MESH_PREDICTION_CONSTRAINED_MULTI_PARALLELOGRAM,
+                        MESH_PREDICTION_TEX_COORDS_PORTABLE}));
 }
 
 // -uv_pred auto keeps stock Draco's choice among its candidates, so it can
