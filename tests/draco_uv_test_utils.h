@@ -71,6 +71,11 @@ StatusOr<std::unique_ptr<Mesh>> DecodeDracoMesh(const std::vector<char> &data);
 std::vector<float> CornerValues(const Mesh &mesh, GeometryAttribute::Type type,
                                 int index = 0);
 
+// Expects every attribute of |a| and |b| (matched by unique id) to have
+// bitwise the same values at every face corner (NaNs compare too).
+void ExpectSameCornerValues(const Mesh &a, const Mesh &b,
+                            const std::string &label);
+
 }  // namespace draco
 
 #endif  // DRACO_UV_TESTS_DRACO_UV_TEST_UTILS_H_

@@ -378,21 +378,6 @@ StatusOr<UvCompressionOptions> ParseUvSchemeName(const std::string &scheme) {
 
 namespace {
 
-// The mesh without its tangent attributes (points that then coincide
-// merge).
-std::unique_ptr<Mesh> WithoutTangents(const Mesh &mesh) {
-  std::unique_ptr<Mesh> copy(new Mesh());
-  copy->Copy(mesh);
-  const std::vector<int> ids = TangentAttributeIds(mesh);
-  for (auto it = ids.rbegin(); it != ids.rend(); ++it) {
-    copy->DeleteAttribute(*it);
-  }
-#ifdef DRACO_ATTRIBUTE_INDICES_DEDUPLICATION_SUPPORTED
-  copy->DeduplicatePointIds();
-#endif
-  return copy;
-}
-
 // Tangent values at every face corner, all tangent attributes, in face
 // order.
 std::vector<float> CornerTangents(const Mesh &mesh) {
@@ -495,7 +480,7 @@ StatusOr<std::vector<TangentEvalRow>> EvaluateMeshTangents(
   if (!HasTangents(mesh)) {
     return rows;
   }
-  const std::unique_ptr<Mesh> without = WithoutTangents(mesh);
+  const std::unique_ptr<Mesh> without = MeshWithoutTangents(mesh);
   for (const int qt : options.qt) {
     for (const int qtg : options.qtg) {
       DRACO_RETURN_IF_ERROR(

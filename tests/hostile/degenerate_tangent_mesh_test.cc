@@ -156,33 +156,6 @@ std::string Label(const std::string &name, const UvEncodeSettings &s) {
          " -qtg " + std::to_string(s.uv.tangent.quantization_bits.value_or(0));
 }
 
-// Every attribute of |a| and |b| at every face corner, by unique id.
-void ExpectSameCornerValues(const Mesh &a, const Mesh &b,
-                            const std::string &label) {
-  ASSERT_EQ(a.num_faces(), b.num_faces()) << label;
-  ASSERT_EQ(a.num_attributes(), b.num_attributes()) << label;
-  for (int i = 0; i < a.num_attributes(); ++i) {
-    const PointAttribute *const att_a = a.attribute(i);
-    const PointAttribute *const att_b =
-        b.GetAttributeByUniqueId(att_a->unique_id());
-    ASSERT_NE(att_b, nullptr) << label;
-    std::vector<float> va(att_a->num_components()), vb(va.size());
-    int differing = 0;
-    for (FaceIndex f(0); f < a.num_faces(); ++f) {
-      for (int k = 0; k < 3; ++k) {
-        att_a->ConvertValue(att_a->mapped_index(a.face(f)[k]),
-                            att_a->num_components(), va.data());
-        att_b->ConvertValue(att_b->mapped_index(b.face(f)[k]),
-                            att_b->num_components(), vb.data());
-        // Bitwise, so that NaNs compare too.
-        differing += std::memcmp(va.data(), vb.data(),
-                                 va.size() * sizeof(float)) != 0;
-      }
-    }
-    EXPECT_EQ(differing, 0) << label << ": attribute " << i;
-  }
-}
-
 // The summary's lines about the tangents ("Tangent prediction..."), or "".
 std::string TangentSummary(const std::string &summary) {
   std::string lines;

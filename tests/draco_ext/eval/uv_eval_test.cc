@@ -78,20 +78,6 @@ UvEvalOptions TangentEvalOptions() {
   return options;
 }
 
-// The mesh without its tangents, as the tangent bytes are measured.
-std::unique_ptr<Mesh> WithoutTangentAttributes(const Mesh &mesh) {
-  std::unique_ptr<Mesh> copy(new Mesh());
-  copy->Copy(mesh);
-  const std::vector<int> ids = TangentAttributeIds(mesh);
-  for (auto it = ids.rbegin(); it != ids.rend(); ++it) {
-    copy->DeleteAttribute(*it);
-  }
-#ifdef DRACO_ATTRIBUTE_INDICES_DEDUPLICATION_SUPPORTED
-  copy->DeduplicatePointIds();
-#endif
-  return copy;
-}
-
 // On every asset with tangents: a row per (qt, qtg, scheme, tangents);
 // tangent bytes are the difference of the two files draco_encoder writes
 // with and without the tangents; stock tangent coding is the reference;
@@ -103,7 +89,7 @@ TEST(UvEvalTest, TangentRowsMeasureWhatTheTangentsCost) {
     ASSERT_TRUE(mesh.ok()) << path;
     ASSERT_TRUE(HasTangents(*mesh.value())) << path;
     const std::unique_ptr<Mesh> without =
-        WithoutTangentAttributes(*mesh.value());
+        MeshWithoutTangents(*mesh.value());
     const auto rows = EvaluateMeshTangents("m", *mesh.value(), options);
     ASSERT_TRUE(rows.ok()) << path << ": " << rows.status().error_msg();
     ASSERT_EQ(rows.value().size(), 1u * 2 * 2 * 3) << path;

@@ -84,31 +84,6 @@ StatusOr<std::vector<char>> EncodeWithTangents(const Mesh &mesh,
   return std::vector<char>(buffer.data(), buffer.data() + buffer.size());
 }
 
-// Every attribute of |a| and |b| at every face corner, by unique id.
-void ExpectSameCornerValues(const Mesh &a, const Mesh &b,
-                            const std::string &label) {
-  ASSERT_EQ(a.num_faces(), b.num_faces()) << label;
-  ASSERT_EQ(a.num_attributes(), b.num_attributes()) << label;
-  for (int i = 0; i < a.num_attributes(); ++i) {
-    const PointAttribute *const att_a = a.attribute(i);
-    const PointAttribute *const att_b =
-        b.GetAttributeByUniqueId(att_a->unique_id());
-    ASSERT_NE(att_b, nullptr) << label;
-    std::vector<float> va(att_a->num_components()), vb(va.size());
-    int differing = 0;
-    for (FaceIndex f(0); f < a.num_faces(); ++f) {
-      for (int k = 0; k < 3; ++k) {
-        att_a->ConvertValue(att_a->mapped_index(a.face(f)[k]),
-                            att_a->num_components(), va.data());
-        att_b->ConvertValue(att_b->mapped_index(b.face(f)[k]),
-                            att_b->num_components(), vb.data());
-        differing += va != vb;
-      }
-    }
-    EXPECT_EQ(differing, 0) << label << ": attribute " << i;
-  }
-}
-
 // The bundled CC0 assets with MikkTSpace tangents and the corpus's Khronos
 // glTFs with their own tangents (when the corpus is there).
 std::vector<std::string> TangentAssetPaths() {
