@@ -376,6 +376,19 @@ StatusOr<UvCompressionOptions> ParseUvSchemeName(const std::string &scheme) {
   return options;
 }
 
+std::unique_ptr<Mesh> MeshWithoutTangents(const Mesh &mesh) {
+  std::unique_ptr<Mesh> copy(new Mesh());
+  copy->Copy(mesh);
+  const std::vector<int> ids = TangentAttributeIds(mesh);
+  for (auto it = ids.rbegin(); it != ids.rend(); ++it) {
+    copy->DeleteAttribute(*it);
+  }
+#ifdef DRACO_ATTRIBUTE_INDICES_DEDUPLICATION_SUPPORTED
+  copy->DeduplicatePointIds();
+#endif
+  return copy;
+}
+
 namespace {
 
 // Tangent values at every face corner, all tangent attributes, in face

@@ -20,6 +20,7 @@
 #define DRACO_EXT_EVAL_UV_EVAL_H_
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -144,6 +145,11 @@ StatusOr<std::vector<UvEvalRow>> EvaluateMesh(const std::string &name,
 // on |mesh|, in that nesting (qt outermost); none without tangents.
 StatusOr<std::vector<TangentEvalRow>> EvaluateMeshTangents(
     const std::string &name, const Mesh &mesh, const UvEvalOptions &options);
+
+// A copy of |mesh| without its tangent attributes (points that then
+// coincide merge, where Draco deduplicates point ids): what a tangent's
+// bytes are measured against.
+std::unique_ptr<Mesh> MeshWithoutTangents(const Mesh &mesh);
 
 }  // namespace draco
 

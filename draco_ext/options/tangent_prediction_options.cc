@@ -223,19 +223,6 @@ std::vector<int> TangentAttributeIds(const Mesh &mesh) {
   return ids;
 }
 
-std::unique_ptr<Mesh> MeshWithoutTangents(const Mesh &mesh) {
-  std::unique_ptr<Mesh> copy(new Mesh());
-  copy->Copy(mesh);
-  const std::vector<int> ids = TangentAttributeIds(mesh);
-  for (auto it = ids.rbegin(); it != ids.rend(); ++it) {
-    copy->DeleteAttribute(*it);
-  }
-#ifdef DRACO_ATTRIBUTE_INDICES_DEDUPLICATION_SUPPORTED
-  copy->DeduplicatePointIds();
-#endif
-  return copy;
-}
-
 std::string WhyNoGeometricTangentPrediction(const Mesh &mesh,
                                             const ExpertEncoder &encoder,
                                             int att_id) {

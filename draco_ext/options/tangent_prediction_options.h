@@ -20,7 +20,6 @@
 #ifndef DRACO_EXT_OPTIONS_TANGENT_PREDICTION_OPTIONS_H_
 #define DRACO_EXT_OPTIONS_TANGENT_PREDICTION_OPTIONS_H_
 
-#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,11 +41,6 @@ bool HasTangentValues(const PointAttribute &att);
 // The tangent attributes of |mesh|: those of type TANGENT (Draco's glTF
 // reader's) and the GENERIC ones with tangent values, in attribute order.
 std::vector<int> TangentAttributeIds(const Mesh &mesh);
-
-// A copy of |mesh| without its tangent attributes (points that then
-// coincide merge, where Draco deduplicates point ids): what a tangent's
-// bytes are measured against.
-std::unique_ptr<Mesh> MeshWithoutTangents(const Mesh &mesh);
 
 // Why the geometric prediction cannot code tangent attribute |att_id| of
 // |mesh| with |encoder|'s present settings exactly, or "" when it can:
