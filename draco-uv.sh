@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The two commands of draco-uv, each doing all set-up on Debian 12:
 #
-#   ./draco-uv.sh demo   installs what is missing, builds, and runs the main
+#   ./draco-uv.sh demo   installs what is missing, builds what it runs
+#                        (libdraco and draco_uv_eval), and runs the main
 #                        job: draco_uv_eval on a bundled mesh.
 #   ./draco-uv.sh test   installs what is missing (also the web build's
 #                        packages and Debian's chromium), builds, builds the
