@@ -531,7 +531,6 @@ int64_t UvLaplacianMaxFactorEntries(int num_vertices) {
 bool ComputeUvLaplacianDecodeWork(const UvLaplacianMesh &mesh,
                                   UvLaplacianDecodeWork *work) {
   work->num_vertices = mesh.num_vertices();
-  work->num_faces = static_cast<int64_t>(mesh.faces.size());
   return UvLaplacianSystem::FactorWork(
       UvTextureGraph(mesh), UvLaplacianMaxFactorEntries(mesh.num_vertices()),
       &work->factor_entries, &work->factor_flops);

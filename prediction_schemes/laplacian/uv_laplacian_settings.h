@@ -87,7 +87,6 @@ struct UvLaplacianEncoderOptions {
 // computes it.
 struct UvLaplacianDecodeWork {
   int num_vertices = 0;
-  int64_t num_faces = 0;
   int64_t factor_entries = 0;
   double factor_flops = 0;
 };
