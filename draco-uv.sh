@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The two commands of draco-uv, each doing all set-up on Debian 12:
 #
-#   ./draco-uv.sh demo   installs what is missing, builds, and runs the main
+#   ./draco-uv.sh demo   installs what is missing, builds what it runs
+#                        (libdraco and draco_uv_eval), and runs the main
 #                        job: draco_uv_eval on a bundled mesh.
 #   ./draco-uv.sh test   installs what is missing (also the web build's
 #                        packages and Debian's chromium), builds, builds the
@@ -73,9 +74,46 @@ install_missing_packages() {  # install_missing_packages PACKAGE...
     "${missing[@]}"
 }
 
+# Reads ninja's output and shows its progress: one line rewritten in place on
+# a terminal, a line every tenth of the work otherwise.
+show_progress() {
+  local line done total percent shown=-1
+  while IFS= read -r line; do
+    [[ ${line} =~ ^\[([0-9]+)/([0-9]+)\] ]] || continue
+    done=${BASH_REMATCH[1]} total=${BASH_REMATCH[2]}
+    ((done > 0)) || continue
+    percent=$((100 * done / total))
+    if [[ -t 1 ]]; then
+      printf '\rdraco-uv.sh: building %3d%% (%d/%d)' "${percent}" "${done}" "${total}"
+    elif ((percent / 10 > shown)); then
+      shown=$((percent / 10))
+      echo "draco-uv.sh: building ${percent}% (${done}/${total})"
+    fi
+  done
+  [[ -t 1 ]] && echo
+  return 0
+}
+
+# build TARGETS [cmake arguments]: configures BUILD_DIR and builds the
+# space-separated TARGETS (empty: all of them). cmake's and the compiler's
+# output, pages of warnings from Draco's sources among it, go to
+# BUILD_DIR/build.log; on failure the log's tail is shown.
 build() {
-  cmake -S . -B "${BUILD_DIR}" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@"
-  cmake --build "${BUILD_DIR}" --parallel "$(nproc)"
+  local targets=$1
+  shift
+  mkdir -p "${BUILD_DIR}"
+  local log="${BUILD_DIR}/build.log" target_args=() target
+  for target in ${targets}; do target_args+=(--target "${target}"); done
+  echo "draco-uv.sh: building ${targets:-everything} in ${BUILD_DIR}/ (output in ${log})"
+  local status=0
+  {
+    cmake -S . -B "${BUILD_DIR}" -G Ninja -DCMAKE_BUILD_TYPE=Release "$@" &&
+      cmake --build "${BUILD_DIR}" --parallel "$(nproc)" "${target_args[@]}"
+  } </dev/null 2>&1 | tee "${log}" | show_progress || status=${PIPESTATUS[0]}
+  if [[ ${status} -ne 0 ]]; then
+    tail -n 40 "${log}" >&2
+    die "the build failed; above are the last lines of ${log}"
+  fi
 }
 
 main() {
@@ -85,7 +123,7 @@ main() {
   case "${command}" in
     demo)
       install_missing_packages "${PACKAGES[@]}"
-      build "$@"
+      build draco_uv_eval "$@"
       # A real textured mesh (Keenan Crane's spot, CC0; testdata/README.md):
       # stock Draco, the default auto, the smallest lossless coder, and the
       # recommended setting with context-coded seams.
@@ -100,7 +138,7 @@ main() {
     test)
       install_missing_packages "${PACKAGES[@]}" "${WEB_PACKAGES[@]}" \
         "${WEB_TEST_PACKAGES[@]}"
-      build "$@"
+      build "" "$@"
       # The sanitizer build for the fuzz smoke run (tools.fuzz_smoke); the
       # determinism check (tools.determinism) builds its own flavours. Both
       # tests skip with a message without clang.

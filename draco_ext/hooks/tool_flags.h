@@ -15,8 +15,8 @@
 // draco-uv's command-line flags as draco_encoder (patches/0004) and
 // draco_transcoder (patches/0011) take them: IsUvCompressionFlag() and
 // ParseUvCompressionFlag() read -uv_pred, -uv_seams, -uv_anchors and the
-// error target (-uv_rmse, -uv_texels, -uv_texture_size) into a
-// UvCompressionOptions, UvCompressionUsage() is their help text, and
+// error target (-uv_rmse, -uv_texels, -uv_texture_size, -uv_decode_limit)
+// into a UvCompressionOptions, UvCompressionUsage() is their help text, and
 // ConfigureUvCompression() applies them to draco_encoder's ExpertEncoder.
 // CheckUnhandledToolArg(), the last branch of both tools' argument loops,
 // takes what no flag took: a flag that looks like draco-uv's is an error

@@ -107,6 +107,7 @@ const std::vector<const char *> &DracoUvFlagNames() {
       "-uv_rmse",          // error target in UV units
       "-uv_texels",        // error target in texels
       "-uv_texture_size",  // texels of -uv_texels' texture
+      "-uv_decode_limit",  // decode cost limit of an error target's choice
       "-uv_seams",         // attribute seam coding
       "-tangent_pred",     // tangent prediction scheme
       "-qtg",              // tangent quantization (draco_encoder)

@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <limits>
 #include <utility>
 
 #include "draco_ext/options/draco_uv_flags.h"
@@ -37,6 +38,8 @@ constexpr char kAnchorsFlag[] = "-uv_anchors";
 constexpr char kRmseFlag[] = "-uv_rmse";
 constexpr char kTexelsFlag[] = "-uv_texels";
 constexpr char kTextureSizeFlag[] = "-uv_texture_size";
+constexpr char kDecodeLimitFlag[] = "-uv_decode_limit";
+constexpr char kNoDecodeLimit[] = "none";
 // Largest -uv_texture_size: 2^24 texels, beyond any GPU's textures.
 constexpr long kMaxTextureSize = 1 << 24;
 constexpr char kRandomPrefix[] = "random:";
@@ -250,6 +253,20 @@ StatusOr<double> ParseUvErrorTarget(const std::string &flag,
   return target;
 }
 
+StatusOr<double> ParseUvDecodeLimit(const std::string &value) {
+  if (value == kNoDecodeLimit) {
+    return std::numeric_limits<double>::infinity();
+  }
+  char *end = nullptr;
+  const double limit = std::strtod(value.c_str(), &end);
+  if (value.empty() || *end != '\0' || !std::isfinite(limit) || limit < 1.0) {
+    return ErrorStatus(std::string(kDecodeLimitFlag) +
+                       " needs a number of at least 1 or '" + kNoDecodeLimit +
+                       "', got '" + value + "'.");
+  }
+  return limit;
+}
+
 Status CheckUvCompressionOptions(const UvCompressionOptions &options) {
   if (options.rmse.has_value() && options.texels.has_value()) {
     return ErrorStatus(
@@ -268,6 +285,14 @@ Status CheckUvCompressionOptions(const UvCompressionOptions &options) {
     return ErrorStatus(std::string(kTextureSizeFlag) +
                        " needs -uv_texels and 1 to " +
                        std::to_string(kMaxTextureSize) + " texels.");
+  }
+  if (options.decode_limit.has_value() &&
+      (!options.ChoosesPrediction() || !options.MaxUvRmse().has_value() ||
+       !(*options.decode_limit >= 1.0))) {
+    return ErrorStatus(std::string(kDecodeLimitFlag) +
+                       " needs an error target (-uv_rmse or -uv_texels) "
+                       "without -uv_pred or with -uv_pred auto, and a limit "
+                       "of at least 1.");
   }
   if (IsUvLaplacian(options.prediction) && !HasUvLaplacianCoder()) {
     return ErrorStatus(std::string("-uv_pred ") +
@@ -290,6 +315,7 @@ bool IsUvCompressionFlag(const char *arg) {
          std::strcmp(arg, kRmseFlag) == 0 ||
          std::strcmp(arg, kTexelsFlag) == 0 ||
          std::strcmp(arg, kTextureSizeFlag) == 0 ||
+         std::strcmp(arg, kDecodeLimitFlag) == 0 ||
          IsTangentCompressionFlag(arg);
 }
 
@@ -319,6 +345,8 @@ Status ParseUvCompressionFlag(int argc, char **argv, int *index,
     DRACO_ASSIGN_OR_RETURN(options->texels, ParseUvErrorTarget(flag, value));
   } else if (flag == kTextureSizeFlag) {
     DRACO_ASSIGN_OR_RETURN(options->texture_size, ParseTextureSize(value));
+  } else if (flag == kDecodeLimitFlag) {
+    DRACO_ASSIGN_OR_RETURN(options->decode_limit, ParseUvDecodeLimit(value));
   } else {
     DRACO_ASSIGN_OR_RETURN(options->prediction, ParseUvPredictionName(value));
   }
@@ -349,6 +377,12 @@ std::string UvCompressionUsage() {
          "  -uv_texels <T>        the same target in texels of the "
          "texture, e.g. 0.5\n"
          "  -uv_texture_size <N>  texels of that texture (default 4096)\n"
+         "  -uv_decode_limit <X>  with an error target: a lossy coding only "
+         "where its\n"
+         "                          whole-mesh decode is estimated at most X "
+         "times the\n"
+         "                          stock-coded file's (default 2); none: no "
+         "limit\n"
          "  -uv_seams <name>      coding of attribute seams (needs -cl 5..10 "
          "to matter):\n" +
          NameLines(std::begin(kSeamCodingNames), std::end(kSeamCodingNames)) +

@@ -43,6 +43,11 @@
 //                       (eq. 9, UV units) is at most R (uv_error_target.h)
 //   -uv_texels T        the same target as RMSE T / N, in texels of a
 //   -uv_texture_size N  texture of N texels (default 4096)
+//   -uv_decode_limit X|none
+//                       where the encoder chooses the scheme for an error
+//                       target, a lossy coding only if its whole-mesh
+//                       decode is estimated at most X times the stock-coded
+//                       file's (default 2; none: no limit)
 //   -tangent_pred, -qtg the mesh's tangents (TangentCompressionOptions,
 //                       tangent_compression_options.h)
 //
@@ -95,6 +100,8 @@ struct UvAnchorSpec {
 struct UvCompressionOptions {
   // -uv_texture_size without the flag.
   static constexpr int kDefaultTextureSize = 4096;
+  // -uv_decode_limit without the flag.
+  static constexpr double kDefaultDecodeLimit = 2.0;
 
   UvPrediction prediction = UvPrediction::kDraco;
   UvSeamCoding seams = UvSeamCoding::kDraco;
@@ -105,6 +112,10 @@ struct UvCompressionOptions {
   std::optional<double> rmse;
   std::optional<double> texels;
   std::optional<int> texture_size;
+  // -uv_decode_limit: the largest estimated whole-mesh decode cost, in
+  // multiples of the stock-coded file's, of a lossy coding that the encoder
+  // may choose for an error target; infinity for none.
+  std::optional<double> decode_limit;
   // How the mesh's tangents are coded (they follow from the UVs).
   TangentCompressionOptions tangent;
 
@@ -114,6 +125,10 @@ struct UvCompressionOptions {
       return *texels / texture_size.value_or(kDefaultTextureSize);
     }
     return rmse;
+  }
+  // The decode limit in effect (kDefaultDecodeLimit without the flag).
+  double DecodeLimit() const {
+    return decode_limit.value_or(kDefaultDecodeLimit);
   }
   // True when the encoder picks the prediction scheme itself: -uv_pred auto,
   // or an error target without a specific -uv_pred.
@@ -131,7 +146,7 @@ struct UvCompressionOptions {
     return prediction == other.prediction && seams == other.seams &&
            anchors == other.anchors && rmse == other.rmse &&
            texels == other.texels && texture_size == other.texture_size &&
-           tangent == other.tangent;
+           decode_limit == other.decode_limit && tangent == other.tangent;
   }
 
   bool operator!=(const UvCompressionOptions &other) const {
@@ -181,10 +196,16 @@ StatusOr<UvAnchorSpec> ParseUvAnchorSpec(const std::string &spec);
 StatusOr<double> ParseUvErrorTarget(const std::string &flag,
                                     const std::string &value);
 
+// Parses a -uv_decode_limit value: a finite number >= 1, or "none"
+// (infinity).
+StatusOr<double> ParseUvDecodeLimit(const std::string &value);
+
 // The options on their own: -uv_anchors only with a Laplacian -uv_pred, a
 // Laplacian -uv_pred only in a build with the Laplacian coder, at most one
 // of -uv_rmse and -uv_texels, each finite and positive, and
-// -uv_texture_size only with -uv_texels, and the tangent options
+// -uv_texture_size only with -uv_texels, -uv_decode_limit (at least 1)
+// only with an error target whose scheme the encoder chooses, and the
+// tangent options
 // (CheckTangentCompressionOptions()). Every entry point checks this before
 // it encodes.
 Status CheckUvCompressionOptions(const UvCompressionOptions &options);

@@ -15,6 +15,7 @@
 #include "draco_ext/options/uv_error_target.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <initializer_list>
@@ -35,6 +36,10 @@
 #define DRACO_UV_DECODES_TRIALS
 #include "draco/compression/decode.h"
 #include "draco_ext/common/uv_rmse.h"
+#ifdef DRACO_UV_LAPLACIAN
+#define DRACO_UV_ESTIMATES_LAPLACIAN_DECODE
+#include "prediction_schemes/laplacian/uv_laplacian_coder.h"
+#endif
 #endif
 
 namespace draco {
@@ -48,6 +53,23 @@ constexpr int kUnquantizedPositionKeyBits = 14;
 // At speed 10 (-cl 0) Draco encodes meshes sequentially, without the
 // connectivity the UV schemes need.
 constexpr int kSequentialEncodingSpeed = 10;
+
+// The decode cost model of EstimateUvLaplacianDecode(), in instructions
+// inside Decoder::DecodeMeshFromBuffer (-O3 x86-64 build, one thread, the
+// AVX2 dense kernels), least-squares fitted to the relative error on the
+// 22 real corpus meshes at -qp 14 -qt 12 -cl 10 (benchmarks/laplacian.md,
+// "Decode cost of the error target's choice"; each term within 0.86-1.11x
+// of the measured cost, the ratio within 0.89-1.11x). The stock-coded
+// file: per face (connectivity, and every attribute's prediction per
+// corner) and per component of an attribute value. The Laplacian coding
+// adds, net of the stock coding of the attribute it replaces: per flop and
+// per entry of the factor, and per texture vertex (ordering, operator,
+// residual decoding and the solve).
+constexpr double kStockInstructionsPerFace = 2350;
+constexpr double kStockInstructionsPerValueComponent = 65;
+constexpr double kLaplacianInstructionsPerFlop = 0.082;
+constexpr double kLaplacianInstructionsPerFactorEntry = 180;
+constexpr double kLaplacianInstructionsPerVertex = 2300;
 
 // One coding of the attribute and what it gives.
 struct Coding {
@@ -270,7 +292,7 @@ std::string TargetLabel(const UvCompressionOptions &options) {
 std::string Summary(const UvCompressionOptions &options,
                     const std::string &label, const Coding &chosen,
                     std::initializer_list<std::optional<Coding>> candidates,
-                    int num_encodes) {
+                    const std::string &laplacian_note, int num_encodes) {
   std::string summary = "UV error target " + TargetLabel(options) + ": " +
                         label + " -> " + Describe(chosen, options.anchors) +
                         " in all, RMSE " + Format("%.3g", chosen.rmse) + " (";
@@ -279,10 +301,102 @@ std::string Summary(const UvCompressionOptions &options,
       summary += "also met: " + Describe(*other, options.anchors) + "; ";
     }
   }
+  if (!laplacian_note.empty()) {
+    summary += laplacian_note + "; ";
+  }
   return summary + std::to_string(num_encodes) + " trial encodes)\n";
 }
 
+#ifdef DRACO_UV_ESTIMATES_LAPLACIAN_DECODE
+// The texture connectivity of |att| as the Laplacian coder sees it: one
+// texture vertex per distinct pair of position and texture coordinate
+// (NumUvVertices()), numbered in the order of those pairs.
+UvLaplacianMesh TextureConnectivity(const Mesh &mesh,
+                                    const PointAttribute &att) {
+  const PointAttribute *const position =
+      mesh.GetNamedAttribute(GeometryAttribute::POSITION);
+  std::vector<uint64_t> key(mesh.num_points());
+  for (PointIndex p(0); p < mesh.num_points(); ++p) {
+    const uint64_t pos =
+        position == nullptr ? 0 : position->mapped_index(p).value();
+    key[p.value()] = (pos << 32) | att.mapped_index(p).value();
+  }
+  std::vector<uint64_t> vertices = key;
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  UvLaplacianMesh texture;
+  texture.positions.resize(vertices.size());  // Unused by the ordering.
+  texture.faces.resize(mesh.num_faces());
+  for (FaceIndex f(0); f < mesh.num_faces(); ++f) {
+    for (int c = 0; c < 3; ++c) {
+      texture.faces[f.value()][c] =
+          static_cast<int>(std::lower_bound(vertices.begin(), vertices.end(),
+                                            key[mesh.face(f)[c].value()]) -
+                           vertices.begin());
+    }
+  }
+  return texture;
+}
+
+// The stock-coded file's decode instructions (kStockInstructionsPerFace).
+double StockDecodeInstructions(const Mesh &mesh) {
+  double value_components = 0;
+  for (int i = 0; i < mesh.num_attributes(); ++i) {
+    value_components += static_cast<double>(mesh.attribute(i)->size()) *
+                        mesh.attribute(i)->num_components();
+  }
+  return kStockInstructionsPerFace * mesh.num_faces() +
+         kStockInstructionsPerValueComponent * value_components;
+}
+#endif  // DRACO_UV_ESTIMATES_LAPLACIAN_DECODE
+
+// Why the Laplacian was or was not tried, for the summary line.
+std::string LaplacianDecodeNote(
+    const UvCompressionOptions &options,
+    const StatusOr<UvLaplacianDecodeEstimate> &estimate, bool within_limit) {
+  if (!estimate.ok()) {
+    return "Laplacian not tried: " + estimate.status().error_msg_string();
+  }
+  std::string note = "Laplacian decode estimated at " +
+                     Format("%.2g", estimate.value().ratio) +
+                     "x the stock-coded file's";
+  if (!options.ChoosesPrediction()) {
+    return note;
+  }
+  if (std::isinf(options.DecodeLimit())) {
+    return note + ", no -uv_decode_limit";
+  }
+  const std::string limit = Format("%g", options.DecodeLimit());
+  return note + (within_limit
+                     ? ", within -uv_decode_limit " + limit
+                     : ", above -uv_decode_limit " + limit + ": not tried");
+}
+
 }  // namespace
+
+StatusOr<UvLaplacianDecodeEstimate> EstimateUvLaplacianDecode(const Mesh &mesh,
+                                                              int att_id) {
+#ifdef DRACO_UV_ESTIMATES_LAPLACIAN_DECODE
+  UvLaplacianDecodeEstimate estimate;
+  if (!ComputeUvLaplacianDecodeWork(
+          TextureConnectivity(mesh, *mesh.attribute(att_id)), &estimate.work)) {
+    return ErrorStatus("its factor is too large for the decoder");
+  }
+  const UvLaplacianDecodeWork &work = estimate.work;
+  const double extra = kLaplacianInstructionsPerFlop * work.factor_flops +
+                       kLaplacianInstructionsPerFactorEntry *
+                           static_cast<double>(work.factor_entries) +
+                       kLaplacianInstructionsPerVertex * work.num_vertices;
+  const double stock = StockDecodeInstructions(mesh);
+  estimate.ratio = stock > 0 ? 1 + extra / stock : 1;
+  return estimate;
+#else
+  (void)mesh;
+  (void)att_id;
+  return ErrorStatus(
+      "this build has no Draco decoder to measure the Laplacian's trials");
+#endif
+}
 
 StatusOr<double> QuantizationRmse(const Mesh &mesh, const PointAttribute &att,
                                   int quantization_bits) {
@@ -348,12 +462,20 @@ StatusOr<std::string> ConfigureUvErrorTarget(
     DRACO_ASSIGN_OR_RETURN(lossless, search.Lossless());
   }
   std::optional<Coding> laplacian;
+  std::string laplacian_note;
   if (IsUvLaplacian(options.prediction) ||
       (options.ChoosesPrediction() && HasUvLaplacianCoder())) {
-    const auto result = search.Laplacian(
-        lossless ? lossless->bytes : std::numeric_limits<size_t>::max());
-    if (IsUvLaplacian(options.prediction) || result.ok()) {
-      DRACO_ASSIGN_OR_RETURN(laplacian, result);
+    const StatusOr<UvLaplacianDecodeEstimate> estimate =
+        EstimateUvLaplacianDecode(mesh, att_id);
+    const bool within_limit =
+        estimate.ok() && estimate.value().ratio <= options.DecodeLimit();
+    laplacian_note = LaplacianDecodeNote(options, estimate, within_limit);
+    if (IsUvLaplacian(options.prediction) || within_limit) {
+      const auto result = search.Laplacian(
+          lossless ? lossless->bytes : std::numeric_limits<size_t>::max());
+      if (IsUvLaplacian(options.prediction) || result.ok()) {
+        DRACO_ASSIGN_OR_RETURN(laplacian, result);
+      }
     }
   }
   const std::optional<Coding> &best =
@@ -365,7 +487,7 @@ StatusOr<std::string> ConfigureUvErrorTarget(
                        TargetLabel(options) + ".");
   }
   DRACO_RETURN_IF_ERROR(search.Apply(*best));
-  return Summary(options, label, *best, {lossless, laplacian},
+  return Summary(options, label, *best, {lossless, laplacian}, laplacian_note,
                  search.num_encodes());
 }
 

@@ -23,6 +23,11 @@
 //    -qt: its error is measured by decoding a trial encode, the -qt that
 //    meets R predicted from it assuming RMSE ~ 2^-qt, then stepped by one
 //    until the smallest -qt that meets R is found (typically 2-3 trials).
+// Where the encoder chooses the scheme (no -uv_pred, or auto), the Laplacian
+// is tried only if decoding the whole mesh with it is estimated to cost at
+// most options.DecodeLimit() times decoding the stock-coded file
+// (EstimateUvLaplacianDecode()); the summary line gives the estimate and
+// the decision.
 // The target replaces -qt for TEX_COORD attributes. Weak spots: the
 // Laplacian's RMSE is assumed to fall with -qt (it does on the corpus);
 // other anchor counts are not searched; builds without Draco's decoder
@@ -38,6 +43,7 @@
 #include "draco/core/status_or.h"
 #include "draco/mesh/mesh.h"
 #include "draco_ext/options/uv_compression_options.h"
+#include "prediction_schemes/laplacian/uv_laplacian_settings.h"
 
 namespace draco {
 
@@ -55,6 +61,32 @@ StatusOr<double> QuantizationRmse(const Mesh &mesh, const PointAttribute &att,
 StatusOr<int> SmallestQuantizationBitsFor(const Mesh &mesh,
                                           const PointAttribute &att,
                                           double max_rmse, int max_bits);
+
+// What decoding a Laplacian coding of a TEX_COORD attribute costs.
+struct UvLaplacianDecodeEstimate {
+  UvLaplacianDecodeWork work;
+  // Whole-mesh decode of the file with the Laplacian coding, in multiples
+  // of the stock-coded file's.
+  double ratio = 0;
+};
+
+// The decode cost of coding TEX_COORD attribute |att_id| of |mesh| with
+// the Laplacian coder, estimated without encoding: the decoder's factor
+// (ComputeUvLaplacianDecodeWork() on the attribute's texture connectivity)
+// and a linear model of decoding instructions fitted on the corpus
+// (benchmarks/laplacian.md, "Decode cost of the error target's choice"):
+// the stock-coded file's from the faces and attribute values, the
+// Laplacian's extra from the factor's flops and entries and the texture
+// vertices. Weak where: other texture coordinate sets coded with the
+// Laplacian add their own cost, which this per-attribute ratio leaves out;
+// the model counts instructions of a native x86-64 build, and WebAssembly
+// decodes the factorisation's dense kernels relatively slower; the
+// decoder numbers the texture vertices in Edgebreaker's order, which may
+// order the factor a little differently. Fails in builds without the
+// Laplacian coder or Draco's decoder, and when the decoder would refuse
+// the system.
+StatusOr<UvLaplacianDecodeEstimate> EstimateUvLaplacianDecode(const Mesh &mesh,
+                                                              int att_id);
 
 // Configures TEX_COORD attribute |att_id| of |mesh| on |encoder| for the
 // error target options.MaxUvRmse(): quantization bits, prediction scheme

@@ -528,6 +528,14 @@ int64_t UvLaplacianMaxFactorEntries(int num_vertices) {
                   kMinEntries + kEntriesPerVertex * std::max(0, num_vertices));
 }
 
+bool ComputeUvLaplacianDecodeWork(const UvLaplacianMesh &mesh,
+                                  UvLaplacianDecodeWork *work) {
+  work->num_vertices = mesh.num_vertices();
+  return UvLaplacianSystem::FactorWork(
+      UvTextureGraph(mesh), UvLaplacianMaxFactorEntries(mesh.num_vertices()),
+      &work->factor_entries, &work->factor_flops);
+}
+
 bool EncodeUvLaplacian(const UvLaplacianMesh &mesh, const UvValues &uv,
                        const UvLaplacianEncoderOptions &options,
                        EncoderBuffer *buffer, UvValues *reconstruction) {

@@ -65,6 +65,13 @@ namespace draco {
 // constant).
 int64_t UvLaplacianMaxFactorEntries(int num_vertices);
 
+// The decode work of |mesh|, from the ordering the decoder computes (the
+// same code on the same texture graph; a graph whose vertices are numbered
+// differently, e.g. before the encoder's traversal, may order a little
+// differently). False when the decoder would refuse the system.
+bool ComputeUvLaplacianDecodeWork(const UvLaplacianMesh &mesh,
+                                  UvLaplacianDecodeWork *work);
+
 // Encodes |uv| (one row per texture vertex of |mesh|, in frame units).
 // |reconstruction|, if given, receives what the decoder will reconstruct
 // (up to rounding). Falls back to the Tutte Laplacian, and says so in the

@@ -79,6 +79,18 @@ struct UvLaplacianEncoderOptions {
   bool error_diffusion = true;
 };
 
+// What decoding a Laplacian coding costs beyond reading its stream: the
+// size of the system and of the Cholesky factor of its normal equations,
+// whose ordering and factorisation dominate (the flops grow like n^1.5 on
+// mesh graphs under nested dissection). The anchors change the factor's
+// values, not its work. ComputeUvLaplacianDecodeWork() (uv_laplacian_coder.h)
+// computes it.
+struct UvLaplacianDecodeWork {
+  int num_vertices = 0;
+  int64_t factor_entries = 0;
+  double factor_flops = 0;
+};
+
 // The frame bits for step bits |step_bits|.
 inline int UvLaplacianFrameBits(int step_bits) {
   const int frame_bits = step_bits + kUvLaplacianFrameExtraBits;

@@ -153,6 +153,20 @@ bool UvLaplacianSystem::Analyze(
          cholesky_.factor_flops() <= MaxFactorFlops(graph.size());
 }
 
+bool UvLaplacianSystem::FactorWork(const MatrixGraph &graph,
+                                   int64_t max_factor_entries,
+                                   int64_t *factor_entries,
+                                   double *factor_flops) {
+  SparseCholesky cholesky;
+  if (NormalMatrixBound(graph) > max_factor_entries ||
+      !cholesky.Analyze(graph, max_factor_entries)) {
+    return false;
+  }
+  *factor_entries = cholesky.factor_size();
+  *factor_flops = cholesky.factor_flops();
+  return *factor_flops <= MaxFactorFlops(graph.size());
+}
+
 bool UvLaplacianSystem::Factorize(const std::vector<int> &anchors) {
   DRACO_DCHECK(op_ != nullptr);
   anchors_ = anchors;

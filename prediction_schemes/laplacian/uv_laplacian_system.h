@@ -80,6 +80,13 @@ class UvLaplacianSystem {
 
   const std::vector<int> &anchors() const { return anchors_; }
 
+  // The entries and floating point operations of the factor Factorize()
+  // computes for |graph| (as ordered by Analyze()), without building or
+  // factorising anything; false where Analyze() would refuse |graph|.
+  // Encoders estimate what decoding will cost from it.
+  static bool FactorWork(const MatrixGraph &graph, int64_t max_factor_entries,
+                         int64_t *factor_entries, double *factor_flops);
+
  private:
   const UvLaplacianOperator *op_ = nullptr;
   SymmetricMatrix normal_;  // L^T L between Analyze() and Factorize().

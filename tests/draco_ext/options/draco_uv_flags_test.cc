@@ -158,7 +158,8 @@ TEST(DracoUvFlagsTest, FamilyFlagsAreOursWithoutAnEntry) {
     EXPECT_EQ(verdict.message,
               "unknown flag " + std::string(arg) +
                   "; this build's draco-uv flags are -uv_pred, -uv_anchors, "
-                  "-uv_rmse, -uv_texels, -uv_texture_size, -uv_seams, "
+                  "-uv_rmse, -uv_texels, -uv_texture_size, "
+                  "-uv_decode_limit, -uv_seams, "
                   "-tangent_pred, -qtg.");
   }
 }

@@ -23,6 +23,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -90,6 +91,36 @@ TEST(UvErrorTargetTest, TexelsAreATargetInTextureUnits) {
   EXPECT_FALSE(CheckUvCompressionOptions(size_alone).ok());
 }
 
+TEST(UvErrorTargetTest, DecodeLimitFlagTakesANumberOfAtLeastOneOrNone) {
+  for (const std::string value : {"0", "0.99", "-2", "nan", "inf", "abc", ""}) {
+    UvCompressionOptions options;
+    const Status status = ParseFlag({"-uv_decode_limit", value}, &options);
+    ASSERT_FALSE(status.ok()) << value;
+    EXPECT_EQ(status.error_msg_string(),
+              "-uv_decode_limit needs a number of at least 1 or 'none', got '" +
+                  value + "'.");
+  }
+  UvCompressionOptions options;
+  EXPECT_EQ(options.DecodeLimit(), 2.0) << "default";
+  ASSERT_TRUE(ParseFlag({"-uv_decode_limit", "1.5"}, &options).ok());
+  EXPECT_EQ(options.DecodeLimit(), 1.5);
+  ASSERT_TRUE(ParseFlag({"-uv_decode_limit", "none"}, &options).ok());
+  EXPECT_TRUE(std::isinf(options.DecodeLimit()));
+  EXPECT_FALSE(ParseFlag({"-uv_decode_limit"}, &options).ok()) << "no value";
+}
+
+TEST(UvErrorTargetTest, DecodeLimitNeedsATargetWhoseSchemeTheEncoderChooses) {
+  UvCompressionOptions options;
+  options.decode_limit = 3;
+  EXPECT_FALSE(CheckUvCompressionOptions(options).ok()) << "no target";
+  options.rmse = 1e-3;
+  EXPECT_TRUE(CheckUvCompressionOptions(options).ok());
+  options.prediction = UvPrediction::kAuto;
+  EXPECT_TRUE(CheckUvCompressionOptions(options).ok());
+  options.prediction = UvPrediction::kWeighted;
+  EXPECT_FALSE(CheckUvCompressionOptions(options).ok()) << "named scheme";
+}
+
 // The error predicted without encoding is the one a decoder reproduces.
 TEST(UvErrorTargetTest, QuantizationRmseIsTheDecodedErrorOfLosslessCoding) {
   for (const std::string &path : TexturedObjPlyMeshPaths()) {
@@ -138,6 +169,102 @@ TEST(UvErrorTargetTest, ANamedPredictionKeepsItsScheme) {
         << summary.value();
     EXPECT_EQ(expert.options().GetAttributeInt(att_id, "prediction_scheme", -1),
               UvPredictionMethod(options.prediction));
+  }
+}
+
+// What ConfigureUvCompression() chose for the TEX_COORD attribute of |mesh|
+// at RMSE 1.5e-3 with |decode_limit| (unset: the default).
+struct TargetChoice {
+  std::string summary;
+  int prediction_scheme = -1;
+  size_t bytes = 0;
+};
+
+TargetChoice ChooseForTarget(const Mesh &mesh,
+                             std::optional<double> decode_limit) {
+  UvCompressionOptions options;
+  options.rmse = 1.5e-3;
+  options.decode_limit = decode_limit;
+  Encoder encoder;
+  encoder.SetAttributeQuantization(GeometryAttribute::POSITION, 14);
+  encoder.SetAttributeQuantization(GeometryAttribute::TEX_COORD, 12);
+  encoder.SetSpeedOptions(0, 0);
+  ExpertEncoder expert(mesh);
+  expert.Reset(encoder.CreateExpertEncoderOptions(mesh));
+  const auto summary = ConfigureUvCompression(options, &mesh, &expert);
+  TargetChoice choice;
+  EXPECT_TRUE(summary.ok()) << summary.status().error_msg();
+  if (!summary.ok()) {
+    return choice;
+  }
+  choice.summary = summary.value();
+  choice.prediction_scheme = expert.options().GetAttributeInt(
+      mesh.GetNamedAttributeId(GeometryAttribute::TEX_COORD),
+      "prediction_scheme", -1);
+  EncoderBuffer buffer;
+  EXPECT_TRUE(expert.EncodeToBuffer(&buffer).ok());
+  choice.bytes = buffer.size();
+  return choice;
+}
+
+// Small meshes of our testdata and, when present, of the corpus (the
+// Laplacian wins at RMSE 1.5e-3 on khr_suzanne without a limit).
+std::vector<std::string> DecodeLimitMeshes() {
+  std::vector<std::string> paths = {UvTestdataPath("crane_spot.obj"),
+                                    UvTestdataPath("torus_uv.obj")};
+  for (const std::string &path : CorpusMeshPaths()) {
+    for (const std::string name : {"khr_suzanne", "khr_waterbottle"}) {
+      if (path.find("/" + name + ".obj") != std::string::npos) {
+        paths.push_back(path);
+      }
+    }
+  }
+  return paths;
+}
+
+// The limit is a bound on the estimate: a limit just below a mesh's
+// estimate never gives the Laplacian, one just above it and none give
+// the same choice as each other, never bigger than under the lower limit,
+// and the default of 2 decides as a limit of 2.
+TEST(UvErrorTargetTest,
+     DecodeLimitExcludesTheLaplacianWhereItsEstimateIsAbove) {
+  if (!HasUvLaplacianCoder()) {
+    GTEST_SKIP() << "no Laplacian coder in this build";
+  }
+  const int laplacian = MESH_PREDICTION_TEX_COORDS_LAPLACIAN;
+  bool laplacian_chosen = false;
+  for (const std::string &path : DecodeLimitMeshes()) {
+    const auto mesh = ReadTestMesh(path);
+    ASSERT_TRUE(mesh.ok()) << path;
+    const auto estimate = EstimateUvLaplacianDecode(
+        *mesh.value(),
+        mesh.value()->GetNamedAttributeId(GeometryAttribute::TEX_COORD));
+    ASSERT_TRUE(estimate.ok()) << path << ": " << estimate.status().error_msg();
+    const double ratio = estimate.value().ratio;
+    EXPECT_GT(ratio, 1.0) << path;
+    const TargetChoice below =
+        ChooseForTarget(*mesh.value(), std::max(1.0, ratio * 0.99));
+    EXPECT_NE(below.prediction_scheme, laplacian) << path << below.summary;
+    EXPECT_NE(below.summary.find("not tried"), std::string::npos)
+        << below.summary;
+    const TargetChoice above = ChooseForTarget(*mesh.value(), ratio * 1.01);
+    const TargetChoice none =
+        ChooseForTarget(*mesh.value(), std::numeric_limits<double>::infinity());
+    EXPECT_EQ(above.prediction_scheme, none.prediction_scheme) << path;
+    EXPECT_EQ(above.bytes, none.bytes) << path;
+    EXPECT_LE(none.bytes, below.bytes) << path;
+    EXPECT_NE(none.summary.find("no -uv_decode_limit"), std::string::npos)
+        << none.summary;
+    laplacian_chosen |= none.prediction_scheme == laplacian;
+    const TargetChoice by_default = ChooseForTarget(*mesh.value(), {});
+    const TargetChoice two = ChooseForTarget(*mesh.value(), 2.0);
+    EXPECT_EQ(by_default.bytes, two.bytes) << path;
+    if (ratio > 2.0) {
+      EXPECT_NE(by_default.prediction_scheme, laplacian) << path;
+    }
+  }
+  if (!CorpusMeshPaths().empty()) {
+    EXPECT_TRUE(laplacian_chosen) << "no mesh where lifting the limit matters";
   }
 }
 
