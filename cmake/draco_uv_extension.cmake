@@ -152,6 +152,8 @@ list(
          "${draco_uv_ext}/options/tangent_compression_options.h"
          "${draco_uv_ext}/options/tangent_prediction_options.cc"
          "${draco_uv_ext}/options/tangent_prediction_options.h"
+         "${draco_uv_ext}/options/trial_encoder.cc"
+         "${draco_uv_ext}/options/trial_encoder.h"
          "${draco_uv_ext}/options/uv_seam_options.cc"
          "${draco_uv_ext}/options/uv_seam_options.h"
          "${draco_uv_ext}/hooks/web_encoder.h"

@@ -22,6 +22,7 @@
 #include "draco/core/encoder_buffer.h"
 #include "draco_ext/common/uv_prediction_ids.h"
 #include "draco_ext/common/uv_vertices.h"
+#include "draco_ext/options/trial_encoder.h"
 #include "draco_ext/options/uv_laplacian_options.h"
 #include "prediction_schemes/weighted/uv_stencil_geometry.h"
 
@@ -228,34 +229,45 @@ StatusOr<UvAutoChoice> ChooseSmallestUvPrediction(const Mesh &mesh, int att_id,
   const size_t slow_handicap = (NumUvVertices(mesh, *mesh.attribute(att_id)) +
                                 kUvVerticesPerByteSlowDecodeMustSave - 1) /
                                kUvVerticesPerByteSlowDecodeMustSave;
+  // The whole file with Draco's own choice, which comes first and so wins
+  // ties: the other candidates' sizes are that plus what a trial encode of
+  // the positions and these texture coordinates alone differs by.
   UvAutoChoice choice;
-  size_t best_cost = std::numeric_limits<size_t>::max();
+  DRACO_RETURN_IF_ERROR(
+      encoder->SetAttributePredictionScheme(att_id, PREDICTION_UNDEFINED));
+  DRACO_ASSIGN_OR_RETURN(choice.stock_bytes, EncodedSize(encoder));
+  choice.num_encodes = 1;
+  choice.bytes = choice.stock_bytes;
+  size_t best_cost = choice.stock_bytes;
+  TrialEncoder trial(
+      mesh, {mesh.GetNamedAttributeId(GeometryAttribute::POSITION), att_id},
+      *encoder);
+  std::optional<size_t> trial_stock_bytes;
   // The candidate that stock Draco picks itself would encode the same bytes
-  // as the `draco` candidate, which comes first and so wins the tie: its
-  // trial is left out.
+  // as the `draco` candidate: its trial is left out.
   const PredictionSchemeMethod stock_pick =
       StockUvPrediction(mesh, encoder->options(), att_id);
   for (const PredictionSchemeMethod method : AutoCandidates()) {
-    if (method == stock_pick ||
+    if (method == PREDICTION_UNDEFINED || method == stock_pick ||
         !CheckSettingsFor(method, mesh, *encoder, att_id).ok()) {
       continue;
     }
-    DRACO_RETURN_IF_ERROR(
-        encoder->SetAttributePredictionScheme(att_id, method));
-    const StatusOr<size_t> size = EncodedSize(encoder);
-    ++choice.num_encodes;
-    if (method == PREDICTION_UNDEFINED) {
-      DRACO_RETURN_IF_ERROR(size.status());
-      choice.stock_bytes = size.value();
+    if (!trial_stock_bytes.has_value()) {
+      DRACO_ASSIGN_OR_RETURN(
+          trial_stock_bytes, trial.EncodedSizeWith(1, PREDICTION_UNDEFINED));
+      ++choice.num_encodes;
     }
-    if (!size.ok()) {
+    const StatusOr<size_t> trial_size = trial.EncodedSizeWith(1, method);
+    ++choice.num_encodes;
+    if (!trial_size.ok()) {
       continue;
     }
-    const size_t cost =
-        size.value() + (IsSlowToDecode(method) ? slow_handicap : 0);
+    const size_t size =
+        choice.stock_bytes + trial_size.value() - *trial_stock_bytes;
+    const size_t cost = size + (IsSlowToDecode(method) ? slow_handicap : 0);
     if (cost < best_cost) {
       best_cost = cost;
-      choice.bytes = size.value();
+      choice.bytes = size;
       choice.method = method;
     }
   }

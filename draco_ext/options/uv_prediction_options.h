@@ -75,11 +75,15 @@ PredictionSchemeMethod StockUvPrediction(const Mesh &mesh,
                                          int att_id);
 
 // -uv_pred auto for TEX_COORD attribute |att_id| of |mesh| on |encoder|,
-// whose settings (-cl, -qt) must already allow -uv_pred: encodes once per
+// whose settings (-cl, -qt) must already allow -uv_pred: measures every
 // lossless candidate the settings allow and leaves the smallest set,
 // counting weighted_multi (slower to decode) half a bit per UV vertex
 // larger. Stock Draco's choice comes first and wins ties; the candidate
-// that StockUvPrediction() names is not encoded again.
+// that StockUvPrediction() names is not encoded again. Only the stock
+// choice is encoded whole: the others' whole-file sizes are its size plus
+// the difference their trial encodes of the positions and this attribute
+// alone show (TrialEncoder), which is exact for lossless predictions and
+// spares the other attributes' encoding.
 StatusOr<UvAutoChoice> ChooseSmallestUvPrediction(const Mesh &mesh, int att_id,
                                                   ExpertEncoder *encoder);
 

@@ -106,53 +106,84 @@ class MeshPredictionSchemeGeometricTangentEncoder
   }
 
  private:
+  // The four ways of coding the handedness and the copies (bit 0 of the
+  // index: the handedness as exceptions, bit 1: the copies as exceptions;
+  // else as tokens). They differ only in the tokens they leave out, so one
+  // pass over the entries codes all four.
+  static constexpr int kNumExceptionChoices = 4;
   class Coder {
    public:
-    Coder(UvResidualEncoder *residuals, const GeometricTangentConfig &config,
-          TangentExceptions *handedness_exceptions,
-          TangentExceptions *copy_exceptions)
-        : residuals_(residuals),
-          handedness_exceptions_(config.handedness_exceptions
-                                     ? handedness_exceptions
-                                     : nullptr),
-          copy_exceptions_(config.copy_exceptions ? copy_exceptions
-                                                  : nullptr) {}
+    explicit Coder(int expected_tokens) {
+      for (Choice &choice : choices_) {
+        choice.residuals.Reset(expected_tokens);
+      }
+    }
     bool Value(int context, int32_t predicted, int32_t sign,
                const int32_t *value) {
-      residuals_->Add(context, sign * (*value - predicted));
-      ++num_tokens_;
+      for (Choice &choice : choices_) {
+        choice.Add(context, sign * (*value - predicted));
+      }
       return true;
     }
     bool Handedness(int entry, const std::array<int32_t, 2> &predicted,
                     const int32_t *w) {
       const int32_t symbol = HandednessSymbol(*w, predicted);
-      if (handedness_exceptions_ == nullptr) {
-        residuals_->Add(kTangentHandednessContext, symbol);
-        ++num_tokens_;
-      } else if (symbol != 0) {
-        handedness_exceptions_->Add(entry, symbol);
+      if (symbol != 0) {
+        handedness_exceptions_.Add(entry, symbol);
+      }
+      for (int i = 0; i < kNumExceptionChoices; ++i) {
+        if ((i & 1) == 0) {
+          choices_[i].Add(kTangentHandednessContext, symbol);
+        }
       }
       return true;
     }
     bool Copy(int entry, const int32_t *source, const int32_t *v) {
-      if (copy_exceptions_ != nullptr) {
-        if (std::equal(v, v + kTangentNumComponents, source)) {
-          return true;
-        }
-        copy_exceptions_->Add(entry, 1);
+      const bool exact = std::equal(v, v + kTangentNumComponents, source);
+      if (!exact) {
+        copy_exceptions_.Add(entry, 1);
       }
-      for (int c = 0; c < kTangentNumComponents; ++c) {
-        Value(kTangentCopyContext, source[c], 1, &v[c]);
+      for (int i = 0; i < kNumExceptionChoices; ++i) {
+        if ((i & 2) != 0 && exact) {
+          continue;
+        }
+        for (int c = 0; c < kTangentNumComponents; ++c) {
+          choices_[i].Add(kTangentCopyContext, v[c] - source[c]);
+        }
       }
       return true;
     }
-    uint32_t num_tokens() const { return num_tokens_; }
+    // The prediction-data streams of choice |i| (after the config).
+    bool Encode(int i, EncoderBuffer *streams) const {
+      if ((i & 1) != 0) {
+        handedness_exceptions_.Encode(true, streams);
+      }
+      if ((i & 2) != 0) {
+        copy_exceptions_.Encode(false, streams);
+      }
+      EncodeVarint<uint32_t>(choices_[i].num_tokens, streams);
+      return choices_[i].residuals.Encode(streams);
+    }
 
    private:
-    UvResidualEncoder *residuals_;
-    TangentExceptions *handedness_exceptions_;
-    TangentExceptions *copy_exceptions_;
-    uint32_t num_tokens_ = 0;
+    struct Choice {
+      void Add(int context, int32_t residual) {
+        residuals.Add(context, residual);
+        ++num_tokens;
+      }
+      UvResidualEncoder residuals{kTangentNumContexts};
+      uint32_t num_tokens = 0;
+    };
+    std::array<Choice, kNumExceptionChoices> choices_;
+    TangentExceptions handedness_exceptions_, copy_exceptions_;
+  };
+  // Records nothing: for the pass that only collects neighbour sums.
+  struct NullCoder {
+    bool Value(int, int32_t, int32_t, const int32_t *) { return true; }
+    bool Handedness(int, const std::array<int32_t, 2> &, const int32_t *) {
+      return true;
+    }
+    bool Copy(int, const int32_t *, const int32_t *) { return true; }
   };
 
   // The handedness sign and step-2 gain that suit |predictions| of |values|.
@@ -293,46 +324,30 @@ bool MeshPredictionSchemeGeometricTangentEncoder<DataTypeT, TransformT,
               const std::vector<GeometricTangentPrediction> &predictions,
               const int32_t *values) {
   const auto predict = [&](int entry) { return predictions[entry]; };
-  std::vector<int32_t> copy(values, values + predictions.size() *
-                                                 kTangentNumComponents);
-  TangentExceptions handedness_exceptions, copy_exceptions;
+  // The encoder's coders only read the values.
+  int32_t *const read_only = const_cast<int32_t *>(values);
   // A first pass for the neighbour sums, whose terciles become the
   // thresholds of the neighbour classes.
   GeometricTangentConfig tuned = config;
-  {
-    UvResidualEncoder residuals(kTangentNumContexts);
-    Coder coder(&residuals, config, &handedness_exceptions, &copy_exceptions);
-    std::vector<int8_t> sums(predictions.size(), -1);
-    if (!CodeGeometricTangents(this->mesh_data(), config.coding, predict,
-                               &coder, copy.data(), &sums)) {
-      return false;
-    }
-    tuned.coding.neighbour_thresholds = NeighbourThresholds(sums);
+  std::vector<int8_t> sums(predictions.size(), -1);
+  NullCoder null_coder;
+  if (!CodeGeometricTangents(this->mesh_data(), config.coding, predict,
+                             &null_coder, read_only, &sums)) {
+    return false;
   }
+  tuned.coding.neighbour_thresholds = NeighbourThresholds(sums);
   // Then the handedness and the copies as tokens or as exceptions,
   // whichever is smaller.
-  for (int exceptions = 0; exceptions < 4; ++exceptions) {
-    tuned.handedness_exceptions = (exceptions & 1) != 0;
-    tuned.copy_exceptions = (exceptions & 2) != 0;
-    handedness_exceptions.Clear();
-    copy_exceptions.Clear();
-    UvResidualEncoder residuals(kTangentNumContexts);
-    residuals.Reset(static_cast<int>(predictions.size()) *
-                    kTangentNumComponents);
-    Coder coder(&residuals, tuned, &handedness_exceptions, &copy_exceptions);
-    if (!CodeGeometricTangents(this->mesh_data(), tuned.coding, predict,
-                               &coder, copy.data())) {
-      return false;
-    }
+  Coder coder(static_cast<int>(predictions.size()) * kTangentNumComponents);
+  if (!CodeGeometricTangents(this->mesh_data(), tuned.coding, predict, &coder,
+                             read_only)) {
+    return false;
+  }
+  for (int i = 0; i < kNumExceptionChoices; ++i) {
+    tuned.handedness_exceptions = (i & 1) != 0;
+    tuned.copy_exceptions = (i & 2) != 0;
     EncoderBuffer streams;
-    if (tuned.handedness_exceptions) {
-      handedness_exceptions.Encode(true, &streams);
-    }
-    if (tuned.copy_exceptions) {
-      copy_exceptions.Encode(false, &streams);
-    }
-    EncodeVarint<uint32_t>(coder.num_tokens(), &streams);
-    if (!residuals.Encode(&streams)) {
+    if (!coder.Encode(i, &streams)) {
       return false;
     }
     if (!has_best_ || streams.size() < best_streams_.size()) {

@@ -13,7 +13,6 @@
 // limitations under the License.
 #include "draco_ext/options/tangent_prediction_options.h"
 
-#include <filesystem>
 #include <limits>
 #include <memory>
 #include <optional>
@@ -29,8 +28,6 @@
 
 namespace draco {
 namespace {
-
-namespace fs = std::filesystem;
 
 std::unique_ptr<Mesh> Spot() {
   auto mesh = ReadTestMesh(UvTestdataPath("crane_spot_tangents.glb"));
@@ -67,22 +64,6 @@ Encoded Encode(const Mesh &mesh, const UvEncodeSettings &settings) {
   return result;
 }
 
-std::vector<std::string> TangentAssets() {
-  std::vector<std::string> paths = {
-      UvTestdataPath("small_torus_uv_tangents.glb"),
-      UvTestdataPath("small_cube_sphere_tangents.glb"),
-      UvTestdataPath("crane_spot_tangents.glb")};
-  const fs::path corpus = fs::path(CorpusDir()) / "gltf";
-  if (fs::is_directory(corpus)) {
-    for (const auto &entry : fs::directory_iterator(corpus)) {
-      if (entry.path().extension() == ".gltf") {
-        paths.push_back(entry.path().string());
-      }
-    }
-  }
-  return paths;
-}
-
 TEST(TangentPredictionOptionsTest, FindsTangentsByTypeAndByValues) {
   const auto mesh = Spot();
   EXPECT_EQ(TangentAttributeIds(*mesh), std::vector<int>{TangentId(*mesh)});
@@ -104,7 +85,7 @@ TEST(TangentPredictionOptionsTest, FindsTangentsByTypeAndByValues) {
 // -tangent_pred auto is never bigger than stock coding and decodes to the
 // same values, on every asset.
 TEST(TangentPredictionOptionsTest, AutoIsNeverBiggerThanStock) {
-  for (const std::string &path : TangentAssets()) {
+  for (const std::string &path : TangentGltfAssetPaths()) {
     const auto mesh = ReadTestMesh(path);
     ASSERT_TRUE(mesh.ok()) << path;
     const Encoded stock = Encode(*mesh.value(), TangentSettings("draco"));
@@ -131,7 +112,7 @@ TEST(TangentPredictionOptionsTest, ReusesTheUvChoicesSizeForStockTangents) {
   uv.prediction = UvPrediction::kAuto;
   TangentCompressionOptions tangent;
   tangent.prediction = TangentPrediction::kAuto;
-  for (const std::string &path : TangentAssets()) {
+  for (const std::string &path : TangentGltfAssetPaths()) {
     const auto mesh = ReadTestMesh(path);
     ASSERT_TRUE(mesh.ok()) << path;
     for (const int speed : {0, 3}) {

@@ -181,5 +181,40 @@ TEST(UvPredictionAutoTest, IsNeverLargerThanStockOnDracoTestdata) {
   }
 }
 
+// -uv_pred auto encodes the whole mesh once, with Draco's own choice, and
+// the other candidates with the positions and texture coordinates alone;
+// the sizes it reports are still the whole file's, on meshes with normals
+// and tangents besides, and its choice is never larger than stock's.
+TEST(UvPredictionAutoTest, ReportsTheWholeFilesSizes) {
+  for (const std::string &path : TangentGltfAssetPaths()) {
+    const auto mesh = ReadTestMesh(path);
+    ASSERT_TRUE(mesh.ok()) << path;
+    const int att_id =
+        mesh.value()->GetNamedAttributeId(GeometryAttribute::TEX_COORD);
+    for (const int speed : {0, 3}) {
+      ExpertEncoder encoder(*mesh.value());
+      encoder.SetSpeedOptions(speed, speed);
+      for (int i = 0; i < mesh.value()->num_attributes(); ++i) {
+        const GeometryAttribute::Type type =
+            mesh.value()->attribute(i)->attribute_type();
+        encoder.SetAttributeQuantization(
+            i, type == GeometryAttribute::POSITION ? 14
+               : type == GeometryAttribute::NORMAL ? 10
+                                                   : 12);
+      }
+      EncoderBuffer stock, chosen;
+      ASSERT_TRUE(encoder.EncodeToBuffer(&stock).ok()) << path;
+      const auto choice =
+          ChooseSmallestUvPrediction(*mesh.value(), att_id, &encoder);
+      ASSERT_TRUE(choice.ok()) << path << ": " << choice.status().error_msg();
+      ASSERT_TRUE(encoder.EncodeToBuffer(&chosen).ok()) << path;
+      EXPECT_EQ(choice.value().stock_bytes, stock.size()) << path;
+      EXPECT_EQ(choice.value().bytes, chosen.size())
+          << path << " at speed " << speed;
+      EXPECT_LE(chosen.size(), stock.size()) << path;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace draco
