@@ -19,7 +19,9 @@
 // Per file it times the first decode of a fresh module (for the on-demand
 // decoder: reading, compiling and running the part), then ROUNDS decodes
 // interleaved across the decoders, and prints a Markdown table of the first
-// decode, the minimum and the median in milliseconds (wall clock).
+// decode, the minimum and the median in milliseconds of the process's CPU
+// time (user + system: the decode runs on one thread, and preemption on a
+// busy machine does not inflate it).
 //
 //   node benchmarks/web_laplacian_bench.js [--rounds N] NAME=WRAPPER.js ...
 //       -- FILE.drc ...
@@ -27,7 +29,6 @@
 
 const fs = require('fs');
 const path = require('path');
-const {performance} = require('perf_hooks');
 
 async function loadModule(wrapper) {
   const factory = require(path.resolve(wrapper));
@@ -36,14 +37,19 @@ async function loadModule(wrapper) {
   return factory({wasmBinary});
 }
 
+function cpuMs() {
+  const {user, system} = process.cpuUsage();
+  return (user + system) / 1000;
+}
+
 // Decodes |bytes| as three.js does up to the geometry (without copying the
-// attributes out); returns milliseconds.
+// attributes out); returns CPU milliseconds.
 function timeDecode(module, bytes) {
-  const start = performance.now();
+  const start = cpuMs();
   const decoder = new module.Decoder();
   const mesh = new module.Mesh();
   const status = decoder.DecodeArrayToMesh(bytes, bytes.byteLength, mesh);
-  const ms = performance.now() - start;
+  const ms = cpuMs() - start;
   if (!status.ok()) throw new Error(status.error_msg());
   module.destroy(mesh);
   module.destroy(decoder);

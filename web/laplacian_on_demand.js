@@ -33,17 +33,20 @@
 //                                from a Blob, so there it is unknown).
 // On a browser's main thread it cannot load synchronously;
 // Module.loadDracoUvLaplacian() loads it asynchronously beforehand (a
-// Promise). Each Laplacian decode runs in a fresh instance of the compiled
-// part, so the memory a big mesh needed is released afterwards, and a part
-// that traps (its memory cap) leaves nothing behind. When the part is
+// Promise). One instance of the part serves the decodes (a fresh instance
+// per decode would double their time: its memory is new and zeroed again);
+// it is dropped, and its memory released, once it holds more than
+// DRACO_UV_KEEP_BYTES after a decode or when it traps (at its memory cap). When the part is
 // missing or fails, the decode fails and its status's error_msg() says why
 // and what to do, instead of Draco's "Failed to decode point attributes.".
 var DRACO_UV_PART = 'draco_decoder_laplacian.wasm';
 var DRACO_UV_HOWTO = 'give the decoder module the absolute URL of its ' +
     'folder as option dracoUvPath (three.js: register draco3d-uv\'s ' +
     'GLTFLoader plugin, or set dracoLoader.decoderConfig.dracoUvPath)';
-var dracoUvPart = null;  // WebAssembly.Module of the part, once loaded
-var dracoUvError = '';   // Why the last Laplacian decode could not run
+var DRACO_UV_KEEP_BYTES = 256 * 1024 * 1024;
+var dracoUvPart = null;      // WebAssembly.Module of the part, once loaded
+var dracoUvInstance = null;  // Its exports, between decodes
+var dracoUvError = '';       // Why the last Laplacian decode could not run
 
 function dracoUvPartUrl() {
   var folder = Module['dracoUvPath'];
@@ -118,7 +121,7 @@ function dracoUvDecodeLaplacian(positions, numVertices, faces, numFaces,
                                 stream, size, version, uv) {
   try {
     dracoUvPart = dracoUvPart || new WebAssembly.Module(dracoUvPartBytes());
-    var part = dracoUvInstantiate();
+    var part = dracoUvInstance = dracoUvInstance || dracoUvInstantiate();
     var inputs = [[HEAPF64, positions >> 3, 3 * numVertices, Float64Array],
                   [HEAP32, faces >> 2, 3 * numFaces, Int32Array],
                   [HEAPU8, stream, size, Uint8Array]];
@@ -139,8 +142,13 @@ function dracoUvDecodeLaplacian(positions, numVertices, faces, numFaces,
       HEAPF64.set(new Float64Array(part['memory'].buffer, out, 2 * numVertices),
                   uv >> 3);
     }
+    at.concat(out).forEach(part['free']);
+    if (part['memory'].buffer.byteLength > DRACO_UV_KEEP_BYTES) {
+      dracoUvInstance = null;
+    }
     return bits;
   } catch (error) {
+    dracoUvInstance = null;
     dracoUvError = 'draco-uv: ' + (dracoUvPart ? error.message :
         'this file needs ' + DRACO_UV_PART + ': ' + error.message +
         (/dracoUvPath/.test(error.message) ? '' : '; ' + DRACO_UV_HOWTO));
