@@ -28,9 +28,8 @@ EM_JS(int, draco_uv_decode_laplacian,
        int num_faces, const char *stream, int size, int bitstream_version,
        double *uv),
       {
-        return dracoUvDecodeLaplacian(positions, num_vertices, faces,
-                                      num_faces, stream, size,
-                                      bitstream_version, uv);
+        return dracoUvDecodeLaplacian(positions, num_vertices, faces, num_faces,
+                                      stream, size, bitstream_version, uv);
       });
 
 namespace draco {
@@ -40,9 +39,10 @@ bool DecodeUvLaplacianValues(const UvLaplacianMesh &mesh, const char *data,
                              std::vector<double> *uv, int *frame_bits) {
   uv->resize(2 * mesh.positions.size());
   const int bits = draco_uv_decode_laplacian(
-      reinterpret_cast<const double *>(mesh.positions.data()), mesh.num_vertices(),
-      reinterpret_cast<const int *>(mesh.faces.data()), static_cast<int>(mesh.faces.size()), data,
-      static_cast<int>(size), bitstream_version, uv->data());
+      reinterpret_cast<const double *>(mesh.positions.data()),
+      mesh.num_vertices(), reinterpret_cast<const int *>(mesh.faces.data()),
+      static_cast<int>(mesh.faces.size()), data, static_cast<int>(size),
+      bitstream_version, uv->data());
   if (bits < 0) {
     return false;
   }

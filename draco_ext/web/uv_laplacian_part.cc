@@ -35,13 +35,13 @@ extern "C" {
 // frame's bits, or -1 for a stream the coder rejects, counts below zero or
 // a face with a vertex out of range. The inputs are untrusted.
 EMSCRIPTEN_KEEPALIVE int draco_uv_laplacian_decode(
-    const double *positions, int num_vertices, const int *faces,
-    int num_faces, const char *stream, int size, int bitstream_version,
-    double *uv) {
-  if (num_vertices < 0 || num_faces < 0 || size < 0 ||
-      bitstream_version < 0 || bitstream_version > UINT16_MAX ||
-      std::any_of(faces, faces + 3 * static_cast<int64_t>(num_faces),
-                  [num_vertices](int v) { return v < 0 || v >= num_vertices; })) {
+    const double *positions, int num_vertices, const int *faces, int num_faces,
+    const char *stream, int size, int bitstream_version, double *uv) {
+  if (num_vertices < 0 || num_faces < 0 || size < 0 || bitstream_version < 0 ||
+      bitstream_version > UINT16_MAX ||
+      std::any_of(
+          faces, faces + 3 * static_cast<int64_t>(num_faces),
+          [num_vertices](int v) { return v < 0 || v >= num_vertices; })) {
     return -1;
   }
   draco::UvLaplacianMesh mesh;

@@ -72,9 +72,11 @@ class MeshPredictionSchemeTexCoordsLaplacianDecoder
                                  bitstream_version_, &uv, &frame_bits)) {
       return false;
     }
-    const double max_value = static_cast<double>((int64_t{1} << frame_bits) - 1);
+    const double max_value =
+        static_cast<double>((int64_t{1} << frame_bits) - 1);
     for (int i = 0; i < size; ++i) {
-      const double value = std::max(0.0, std::min(max_value, std::round(uv[i])));
+      const double value =
+          std::max(0.0, std::min(max_value, std::round(uv[i])));
       out_data[i] = static_cast<DataTypeT>(value);
     }
     return true;
