@@ -26,7 +26,7 @@
 #                  Draco 1.5.5 built the same way, for size comparisons
 #                  (scripts/web-sizes.sh)
 # and lays out OUT/draco3d-uv/ (see write_package below), then, unless
-# --no-check, decodes every golden file with its four decoders
+# --no-check, decodes every golden file with its three decoders
 # (tests/web/check_golden.js; the default one with and without its
 # Laplacian part).
 #
@@ -193,7 +193,7 @@ if [[ ${check} -eq 1 ]]; then
     args[-1]="${PACKAGE_DIR}/${args[-1]}"
     log="${OUT}/check_golden.$(echo "${module}" | tr "/ " "__").log"
     if node tests/web/check_golden.js "${args[@]}" >"${log}" 2>&1; then
-      echo "build-web.sh: ${module##* }: $(tail -n 1 "${log}")"
+      echo "build-web.sh: ${module}: $(tail -n 1 "${log}")"
     else
       grep -v '^ok ' "${log}" >&2
       die "${module##* } does not decode the golden files to the native values; see ${log}"
