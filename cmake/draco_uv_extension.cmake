@@ -80,13 +80,28 @@ list(
 set(DRACO_UV_DENSE_FRONT_AVX2 OFF CACHE INTERNAL "")
 # The Laplacian texture coordinate coder (encoder and decoder) and its
 # solver; lossless-only builds (DRACO_UV_LAPLACIAN=OFF) leave them and Eigen
-# out.
+# out. The web decoder with the Laplacian part on demand
+# (DRACO_UV_LAPLACIAN_ON_DEMAND, see the top-level CMakeLists.txt) has the
+# scheme but not the solver, which the part (draco_decoder_laplacian)
+# links; its encoder keeps everything.
+set(draco_uv_laplacian_decoder_headers
+    "${draco_uv_schemes}/laplacian/mesh_prediction_scheme_tex_coords_laplacian_decoder.h"
+    "${draco_uv_schemes}/laplacian/mesh_prediction_scheme_tex_coords_laplacian_shared.h"
+    "${draco_uv_schemes}/laplacian/uv_laplacian_decode.h"
+    "${draco_uv_schemes}/laplacian/uv_laplacian_mesh.h")
+if(DRACO_UV_LAPLACIAN AND DRACO_UV_LAPLACIAN_ON_DEMAND)
+  set(draco_uv_laplacian_list draco_compression_encode_sources)
+  list(APPEND draco_compression_decode_sources
+       ${draco_uv_laplacian_decoder_headers}
+       "${draco_uv_ext}/web/uv_laplacian_on_demand.cc")
+else()
+  set(draco_uv_laplacian_list draco_compression_entropy_sources)
+endif()
 if(DRACO_UV_LAPLACIAN)
   list(
-    APPEND draco_compression_entropy_sources
-           "${draco_uv_schemes}/laplacian/mesh_prediction_scheme_tex_coords_laplacian_decoder.h"
+    APPEND ${draco_uv_laplacian_list}
+           ${draco_uv_laplacian_decoder_headers}
            "${draco_uv_schemes}/laplacian/mesh_prediction_scheme_tex_coords_laplacian_encoder.h"
-           "${draco_uv_schemes}/laplacian/mesh_prediction_scheme_tex_coords_laplacian_shared.h"
            "${draco_uv_schemes}/laplacian/uv_laplacian_coder.cc"
            "${draco_uv_schemes}/laplacian/uv_laplacian_coder.h"
            "${draco_uv_schemes}/laplacian/uv_laplacian_operator.cc"

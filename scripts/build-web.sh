@@ -17,15 +17,18 @@
 #   OUT/uv-gltf/   the glTF-only decoder (DRACO_GLTF_BITSTREAM=ON: mesh
 #                  compression with the features of the glTF extension's
 #                  bitstream, no point clouds) and its asm.js fallback
-#   OUT/uv-lite/   the decoder without the lossy Laplacian coder
-#                  (DRACO_UV_LAPLACIAN=OFF): every lossless draco-uv coder,
-#                  about 28 KB gzip smaller (benchmarks/web.md)
+#   OUT/uv-ondemand/  the package's default decoder: every lossless coder,
+#                  and the lossy Laplacian coder's solver in a second module,
+#                  draco_decoder_laplacian.wasm, which the decoder loads only
+#                  for a file that needs it (DRACO_UV_LAPLACIAN_ON_DEMAND;
+#                  benchmarks/web.md, "The Laplacian part on demand")
 #   OUT/stock/, OUT/stock-gltf/   with --stock only: Debian's unpatched
 #                  Draco 1.5.5 built the same way, for size comparisons
 #                  (scripts/web-sizes.sh)
 # and lays out OUT/draco3d-uv/ (see write_package below), then, unless
-# --no-check, decodes every golden file with its four decoders
-# (tests/web/check_golden.js).
+# --no-check, decodes every golden file with its three decoders
+# (tests/web/check_golden.js; the default one with and without its
+# Laplacian part).
 #
 # Needs emscripten, python3-ply, nodejs, cmake, ninja-build, libeigen3-dev
 # and (for minified glue; without it the glue is copied as emscripten wrote
@@ -122,11 +125,10 @@ minify() {
 
 # The package: one folder that serves as
 #  * three.js's decoder path (DRACOLoader.setDecoderPath): draco_wasm_wrapper.js
-#    (defines DracoDecoderModule), draco_decoder.wasm, draco_decoder.js
-#    (asm.js fallback), and gltf/ with the same three files of the glTF-only
-#    decoder; lite/ with draco_wasm_wrapper.js and draco_decoder.wasm of the
-#    decoder without the Laplacian coder, for sites that serve only
-#    losslessly coded texture coordinates;
+#    (defines DracoDecoderModule), draco_decoder.wasm and the Laplacian part
+#    it loads on demand, draco_decoder_laplacian.wasm; draco_decoder.js
+#    (asm.js fallback, every coder in one file), and gltf/ with the same
+#    three files of the glTF-only decoder (every coder in one module);
 #  * the npm package draco3d: package.json whose main draco3d.js exports
 #    createDecoderModule and createEncoderModule, and draco3d's file names
 #    draco_decoder_nodejs.js / draco_encoder_nodejs.js;
@@ -134,11 +136,13 @@ minify() {
 #    (defines DracoEncoderModule) and draco_encoder.wasm.
 write_package() {
   local uv="${OUT}/uv" gltf="${OUT}/uv-gltf"
+  local ondemand="${OUT}/uv-ondemand"
   rm -rf "${PACKAGE_DIR}"
-  mkdir -p "${PACKAGE_DIR}/gltf" "${PACKAGE_DIR}/lite"
-  cp "${uv}/draco/draco_decoder.wasm" "${uv}/draco/draco_encoder.wasm" \
-    "${PACKAGE_DIR}/"
-  minify "${uv}/draco/draco_decoder.js" "${PACKAGE_DIR}/draco_wasm_wrapper.js"
+  mkdir -p "${PACKAGE_DIR}/gltf"
+  cp "${ondemand}/draco/draco_decoder.wasm" \
+    "${ondemand}/draco/draco_decoder_laplacian.wasm" \
+    "${uv}/draco/draco_encoder.wasm" "${PACKAGE_DIR}/"
+  minify "${ondemand}/draco/draco_decoder.js" "${PACKAGE_DIR}/draco_wasm_wrapper.js"
   minify "${uv}/asmjs/draco_decoder.js" "${PACKAGE_DIR}/draco_decoder.js"
   minify "${uv}/draco/draco_encoder.js" "${PACKAGE_DIR}/draco_encoder_wrapper.js"
   # The glTF decoder's glue names its .wasm draco_decoder_gltf.wasm; in gltf/
@@ -154,8 +158,6 @@ write_package() {
     "${gltf}/draco/draco_decoder_gltf.js" >"${OUT}/draco_wasm_wrapper_gltf.js"
   minify "${OUT}/draco_wasm_wrapper_gltf.js" "${PACKAGE_DIR}/gltf/draco_wasm_wrapper.js"
   minify "${gltf}/asmjs/draco_decoder_gltf.js" "${PACKAGE_DIR}/gltf/draco_decoder.js"
-  cp "${OUT}/uv-lite/draco/draco_decoder.wasm" "${PACKAGE_DIR}/lite/"
-  minify "${OUT}/uv-lite/draco/draco_decoder.js" "${PACKAGE_DIR}/lite/draco_wasm_wrapper.js"
   cp web/package/* "${PACKAGE_DIR}/"
   cp "${uv}/draco-patched/LICENSE" "${PACKAGE_DIR}/LICENSE"
   echo "build-web.sh: wrote ${PACKAGE_DIR}"
@@ -167,8 +169,8 @@ configure uv "${ROOT}"
 build uv draco_decoder draco_encoder draco_decoder_asmjs
 configure uv-gltf "${ROOT}" -DDRACO_GLTF_BITSTREAM=ON
 build uv-gltf draco_decoder draco_decoder_asmjs
-configure uv-lite "${ROOT}" -DDRACO_UV_LAPLACIAN=OFF
-build uv-lite draco_decoder
+configure uv-ondemand "${ROOT}" -DDRACO_UV_LAPLACIAN_ON_DEMAND=ON
+build uv-ondemand draco_decoder draco_decoder_laplacian
 write_package
 
 if [[ ${with_stock} -eq 1 ]]; then
@@ -182,15 +184,16 @@ if [[ ${with_stock} -eq 1 ]]; then
 fi
 
 if [[ ${check} -eq 1 ]]; then
-  # The golden files decode to the native decoder's values with each decoder.
-  # The lite decoder must refuse the lossy (Laplacian) ones with an error.
+  # The golden files decode to the native decoder's values with each decoder;
+  # without its Laplacian part the default one must refuse the lossy
+  # (Laplacian) ones with an error.
   for module in draco_wasm_wrapper.js draco_decoder.js gltf/draco_wasm_wrapper.js \
-                "--without-laplacian lite/draco_wasm_wrapper.js"; do
+                "--without-laplacian-part draco_wasm_wrapper.js"; do
     read -r -a args <<<"${module}"
     args[-1]="${PACKAGE_DIR}/${args[-1]}"
-    log="${OUT}/check_golden.$(echo "${module##* }" | tr / _).log"
+    log="${OUT}/check_golden.$(echo "${module}" | tr "/ " "__").log"
     if node tests/web/check_golden.js "${args[@]}" >"${log}" 2>&1; then
-      echo "build-web.sh: ${module##* }: $(tail -n 1 "${log}")"
+      echo "build-web.sh: ${module}: $(tail -n 1 "${log}")"
     else
       grep -v '^ok ' "${log}" >&2
       die "${module##* } does not decode the golden files to the native values; see ${log}"

@@ -80,13 +80,14 @@ header="| file | raw | gzip -9 | brotli -q 11 |
 echo "### Decoder (.wasm)"
 echo
 echo "${header}"
-row "draco-uv \`draco_decoder.wasm\`" "${ours}/draco_decoder.wasm"
-row "draco-uv \`lite/draco_decoder.wasm\` (no Laplacian coder)" "${ours}/lite/draco_decoder.wasm"
+row "draco-uv \`draco_decoder.wasm\` (every lossless coder; Laplacian part on demand)" "${ours}/draco_decoder.wasm"
+row "draco-uv \`draco_decoder_laplacian.wasm\` (the Laplacian part, loaded on demand)" "${ours}/draco_decoder_laplacian.wasm"
+row "draco-uv, every coder in one module (\`uv/\`, not in the package)" "${OUT}/uv/draco/draco_decoder.wasm"
 row "stock Draco 1.5.5, built the same way" "${OUT}/stock/draco_decoder.wasm"
 npm_row "npm draco3d ${DRACO3D_VERSION} \`draco_decoder.wasm\`" "${draco3d}/draco_decoder.wasm"
 npm_row "three ${THREE_VERSION} \`libs/draco/draco_decoder.wasm\`" "${three}/draco_decoder.wasm"
 echo
-echo "draco-uv minus stock (gzip -9): $(delta "${ours}/draco_decoder.wasm" "${OUT}/stock/draco_decoder.wasm"); \`lite/\`: $(delta "${ours}/lite/draco_decoder.wasm" "${OUT}/stock/draco_decoder.wasm")"
+echo "draco-uv minus stock (gzip -9): $(delta "${ours}/draco_decoder.wasm" "${OUT}/stock/draco_decoder.wasm"); every coder in one module: $(delta "${OUT}/uv/draco/draco_decoder.wasm" "${OUT}/stock/draco_decoder.wasm")"
 echo
 echo "### Decoder glue and asm.js fallback"
 echo

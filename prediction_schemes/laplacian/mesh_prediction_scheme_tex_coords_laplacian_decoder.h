@@ -27,7 +27,7 @@
 #include "draco/core/varint_decoding.h"
 #include "draco_ext/common/uv_bitstream_guard.h"
 #include "prediction_schemes/laplacian/mesh_prediction_scheme_tex_coords_laplacian_shared.h"
-#include "prediction_schemes/laplacian/uv_laplacian_coder.h"
+#include "prediction_schemes/laplacian/uv_laplacian_decode.h"
 
 namespace draco {
 
@@ -66,20 +66,18 @@ class MeshPredictionSchemeTexCoordsLaplacianDecoder
     }
     const UvLaplacianMesh mesh = BuildUvLaplacianMesh(
         this->mesh_data(), *positions_, entry_to_point_id_map);
-    DecoderBuffer buffer;
-    buffer.Init(stream_.data(), stream_.size(), bitstream_version_);
-    UvValues uv;
+    std::vector<double> uv;
     int frame_bits;
-    if (!DecodeUvLaplacian(mesh, &buffer, &uv, &frame_bits)) {
+    if (!DecodeUvLaplacianValues(mesh, stream_.data(), stream_.size(),
+                                 bitstream_version_, &uv, &frame_bits)) {
       return false;
     }
-    const double max_value = static_cast<double>((int64_t{1} << frame_bits) - 1);
-    for (int entry = 0; entry < num_entries; ++entry) {
-      for (int c = 0; c < 2; ++c) {
-        const double value =
-            std::max(0.0, std::min(max_value, std::round(uv(entry, c))));
-        out_data[2 * entry + c] = static_cast<DataTypeT>(value);
-      }
+    const double max_value =
+        static_cast<double>((int64_t{1} << frame_bits) - 1);
+    for (int i = 0; i < size; ++i) {
+      const double value =
+          std::max(0.0, std::min(max_value, std::round(uv[i])));
+      out_data[i] = static_cast<DataTypeT>(value);
     }
     return true;
   }

@@ -24,7 +24,7 @@
 
 #include "draco/attributes/point_attribute.h"
 #include "draco_ext/common/uv_corner_graph.h"
-#include "prediction_schemes/laplacian/uv_laplacian_operator.h"
+#include "prediction_schemes/laplacian/uv_laplacian_mesh.h"
 
 namespace draco {
 

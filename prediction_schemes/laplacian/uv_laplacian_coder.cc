@@ -24,6 +24,7 @@
 #include "draco/core/varint_decoding.h"
 #include "draco/core/varint_encoding.h"
 #include "draco_ext/common/uv_residual_coder.h"
+#include "prediction_schemes/laplacian/uv_laplacian_decode.h"
 #include "prediction_schemes/laplacian/uv_laplacian_system.h"
 
 namespace draco {
@@ -591,6 +592,23 @@ bool DecodeUvLaplacian(const UvLaplacianMesh &mesh, DecoderBuffer *buffer,
   }
   *uv = system.Solve(Dequantize(q, step), DequantizeAnchors(anchor_q, step));
   return uv->allFinite();
+}
+
+bool DecodeUvLaplacianValues(const UvLaplacianMesh &mesh, const char *data,
+                             size_t size, uint16_t bitstream_version,
+                             std::vector<double> *uv, int *frame_bits) {
+  DecoderBuffer buffer;
+  buffer.Init(data, size, bitstream_version);
+  UvValues values;
+  if (!DecodeUvLaplacian(mesh, &buffer, &values, frame_bits)) {
+    return false;
+  }
+  uv->resize(2 * static_cast<size_t>(values.rows()));
+  for (int row = 0; row < values.rows(); ++row) {
+    (*uv)[2 * row] = values(row, 0);
+    (*uv)[2 * row + 1] = values(row, 1);
+  }
+  return true;
 }
 
 }  // namespace draco

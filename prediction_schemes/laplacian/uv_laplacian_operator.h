@@ -35,19 +35,10 @@
 #include <Eigen/Core>
 
 #include "draco_ext/linalg/matrix_graph.h"
+#include "prediction_schemes/laplacian/uv_laplacian_mesh.h"
 #include "prediction_schemes/laplacian/uv_laplacian_settings.h"
 
 namespace draco {
-
-// The texture connectivity of one texture coordinate attribute together with
-// the 3D geometry the decoder already has.
-struct UvLaplacianMesh {
-  // 3D position of every texture vertex.
-  std::vector<std::array<double, 3>> positions;
-  // Texture vertices of every face; every index is below positions.size().
-  std::vector<std::array<int, 3>> faces;
-  int num_vertices() const { return static_cast<int>(positions.size()); }
-};
 
 // Texture coordinates of all texture vertices (u, v per row), in the units
 // the coder quantises.

@@ -23,7 +23,8 @@ folders form one chain,
 where the schemes are every prediction_schemes/ family plus
 draco_ext/seams/ (they do not include each other), web -> gltf (the JS
 encoder API, whose glTF writes share the glTF encoder's rule for -uv_pred
-auto), and hooks/ (what Draco's patched sources include) sits above the
+auto), web -> schemes (the web decoder's Laplacian part on demand: its C
+interface and the decoder's import of it), and hooks/ (what Draco's patched sources include) sits above the
 schemes and web/ and is included by nothing of ours.
 
 Also: only prediction_schemes/laplacian/ and draco_ext/linalg/ include
@@ -69,7 +70,7 @@ ALLOWED = {
        for name, deps in SCHEME_FAMILIES.items()},
     OPTIONS: {COMMON} | SCHEMES,
     GLTF: {COMMON, OPTIONS},
-    WEB: {COMMON, OPTIONS, GLTF},
+    WEB: {COMMON, OPTIONS, GLTF} | SCHEMES,
     'draco_ext/hooks': {COMMON, OPTIONS, GLTF, WEB} | SCHEMES,
     EVAL: {COMMON, LINALG, OPTIONS, GLTF} | SCHEMES,
     'draco_ext/tools': {COMMON, OPTIONS, EVAL},

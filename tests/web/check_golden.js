@@ -41,8 +41,12 @@
 //   node tests/web/check_golden.js [--without-laplacian] MODULE.js [GOLDEN_DIR]
 //
 // --without-laplacian is for a decoder built without the Laplacian coder
-// (the package's lite/ decoder): there every lossy file must fail with a
-// decoder error instead of decoding.
+// (-DDRACO_UV_LAPLACIAN=OFF): there every lossy file must fail with a
+// decoder error instead of decoding. --without-laplacian-part is for the
+// package's default decoder, whose Laplacian part loads on demand: given a
+// folder without the part (option dracoUvPath), every lossy file must fail
+// with a decoder error that names the part's file, and the module must go
+// on decoding.
 //
 // MODULE.js is a decoder module that defines DracoDecoderModule, e.g.
 // build-web/draco3d-uv/draco_wasm_wrapper.js (its .wasm is read from
@@ -83,10 +87,9 @@ function fnv1a64(bytes, hash) {
 // Loads the decoder module MODULE.js with draco_decoder.wasm next to it read
 // from disk and passed as wasmBinary: the glue of Debian's emscripten 3.1.6
 // would try fetch() on a file path in Node 18+. An asm.js module ignores it.
-async function loadDecoder(modulePath) {
+async function loadDecoder(modulePath, options) {
   const factory = require(path.resolve(modulePath));
   const wasmPath = path.join(path.dirname(modulePath), 'draco_decoder.wasm');
-  const options = {};
   if (fs.existsSync(wasmPath)) options.wasmBinary = fs.readFileSync(wasmPath);
   return factory(options);
 }
@@ -192,17 +195,20 @@ function checkTangentFiles(goldenDir, decoded) {
 
 async function main() {
   const args = process.argv.slice(2);
-  const withoutLaplacian = args[0] === '--without-laplacian';
-  const [modulePath, goldenArg] = withoutLaplacian ? args.slice(1) : args;
+  const without = ['--without-laplacian', '--without-laplacian-part']
+      .includes(args[0]) ? args.shift() : '';
+  const withoutLaplacian = without !== '';
+  const [modulePath, goldenArg] = args;
   if (!modulePath) {
     console.error(
-        'usage: node check_golden.js [--without-laplacian] MODULE.js ' +
-        '[GOLDEN_DIR]');
+        'usage: node check_golden.js [--without-laplacian | ' +
+        '--without-laplacian-part] MODULE.js [GOLDEN_DIR]');
     process.exit(2);
   }
   const goldenDir = goldenArg ||
       path.join(__dirname, '..', '..', 'testdata', 'golden');
-  const draco = await loadDecoder(modulePath);
+  const draco = await loadDecoder(modulePath, without === '--without-laplacian-part' ?
+      {dracoUvPath: path.join(goldenDir, 'no-laplacian-part-here')} : {});
   let passed = 0;
   let failed = 0;
   const expected = fs.readFileSync(path.join(goldenDir, 'expected.tsv'),
@@ -244,13 +250,23 @@ async function main() {
     } catch (e) {
       error = e;
     }
-    if (withoutLaplacian ? error instanceof DecodeError : !error) {
+    const refused = error instanceof DecodeError &&
+        (without !== '--without-laplacian-part' ||
+         error.message.includes('draco_decoder_laplacian.wasm'));
+    if (withoutLaplacian ? refused : !error) {
       ++passed;
       console.log(`ok lossy/${file}\t${error ? error.message : line}`);
     } else {
       ++failed;
       console.log(`FAIL lossy/${file}: ${error ? error.message : 'decoded'}`);
     }
+  }
+  if (without === '--without-laplacian-part') {
+    // The module still decodes after the refusals.
+    const [file, want] = expected[0].split('\t');
+    const again = digest(draco, fs.readFileSync(path.join(goldenDir, file)));
+    again === want ? ++passed : ++failed;
+    console.log(`${again === want ? 'ok' : 'FAIL'} ${file} after the refusals`);
   }
   console.log(`golden: ${passed} passed, ${failed} failed`);
   process.exit(failed === 0 && passed > 0 ? 0 : 1);

@@ -10,7 +10,7 @@
 #   ctest-run.sh test FILE        web.<name>: node tests/web/FILE; skips when
 #                                 the package or tests/web/node_modules (as
 #                                 install-packages.sh leaves it) is missing.
-#   ctest-run.sh golden [--without-laplacian] MODULE
+#   ctest-run.sh golden [--without-laplacian | --without-laplacian-part] MODULE
 #                                 web.golden_*: tests/web/check_golden.js on
 #                                 $DRACO_UV_WEB_PACKAGE/MODULE; skips when the
 #                                 package is missing.
@@ -49,9 +49,9 @@ case "$1" in
     exec node "$2"
     ;;
   golden)
-    # golden [--without-laplacian] MODULE
-    [[ $# -eq 2 || ( $# -eq 3 && $2 == --without-laplacian ) ]] ||
-      { echo "usage: $0 golden [--without-laplacian] MODULE" >&2; exit 2; }
+    # golden [--without-laplacian | --without-laplacian-part] MODULE
+    [[ $# -eq 2 || ( $# -eq 3 && $2 == --without-laplacian* ) ]] ||
+      { echo "usage: $0 golden [--without-laplacian | --without-laplacian-part] MODULE" >&2; exit 2; }
     exec node check_golden.js "${@:2:$#-2}" "${package}/${!#}"
     ;;
   *) echo "ctest-run.sh: unknown command '$1'" >&2; exit 2 ;;

@@ -33,10 +33,14 @@
  *    requires DRACOUV_attribute_compression (no blank success);
  *  - without the package's GLTFLoader plugin (three-plugin.mjs) GLTFLoader
  *    warns 'Unknown extension "DRACOUV_attribute_compression"', with it not.
- * Once: the package's gltf/ decoder and its asm.js fallback
- * (setDecoderConfig({type: 'js'})) give the reference's pixels; its lite/
- * decoder (no Laplacian coder) gives them on a lossless GLB and fails with a
- * decoding error on the Laplacian one.
+ * The package's decoder loads its Laplacian part
+ * (draco_decoder_laplacian.wasm) only for the Laplacian GLB: the test's
+ * server counts its requests (no caching), none for every lossless GLB, at
+ * least one for the Laplacian one. Once: the package's gltf/ decoder and its
+ * asm.js fallback (setDecoderConfig({type: 'js'})) give the reference's
+ * pixels; without the plugin, the Laplacian GLB fails with a decoding error
+ * that names the part and the option dracoUvPath, without requesting the
+ * part, and renders once the page sets decoderConfig.dracoUvPath itself.
  *
  *   node tests/web/three_browser_test.mjs
  *
@@ -73,6 +77,9 @@ const kSettings = [
   [`stock_qt${kCoarseQt}`, [], 'coarse'],
 ];
 const kTimeoutMs = 150000;
+const kPart = 'draco_decoder_laplacian.wasm';
+// Paths the test's server was asked for, in order.
+const requests = [];
 
 let failures = 0;
 function check(ok, what) {
@@ -132,6 +139,7 @@ const kTypes = {'.html': 'text/html', '.js': 'text/javascript',
 async function serve(roots) {
   const server = http.createServer((request, response) => {
     const url = new URL(request.url, 'http://127.0.0.1');
+    requests.push(url.pathname);
     const [, top, ...rest] = decodeURIComponent(url.pathname).split('/');
     const root = roots[top];
     const file = root && path.resolve(root, ...rest);
@@ -140,8 +148,10 @@ async function serve(roots) {
       response.writeHead(404).end();
       return;
     }
+    // No caching, so that every load of the Laplacian part is a request.
     response.writeHead(200, {'Content-Type': kTypes[path.extname(file)] ||
-                                             'application/octet-stream'});
+                                             'application/octet-stream',
+                             'Cache-Control': 'no-store'});
     fs.createReadStream(file).pipe(response);
   });
   await new Promise((resolve) => server.listen(0, '127.0.0.1', resolve));
@@ -168,13 +178,20 @@ function difference(reference, other) {
   return {differing: differing / model, mean: sum / model};
 }
 
-/** Renders in the page; prints one line; returns the page's result. */
+/**
+ * Renders in the page; prints one line; returns the page's result with
+ * partRequests, how often the server was asked for the Laplacian part.
+ */
 async function render(page, label, options, view) {
+  const first = requests.length;
   const result = await page.evaluate(
       (o, v) => window.renderGlb(o, v), options, view || null);
+  result.partRequests =
+      requests.slice(first).filter((p) => p.endsWith(`/${kPart}`)).length;
   const what = result.error ? `error "${result.error}"` :
       `sha256 ${result.sha256.slice(0, 16)} model pixels ${result.nonBackground}`;
-  console.log(`  ${label}: ${what}`);
+  console.log(`  ${label}: ${what}; ${kPart} requested ` +
+              `${result.partRequests} times`);
   return result;
 }
 
@@ -183,7 +200,7 @@ const kDecoders = {
   ours: {decoderPath: '/pkg/'},
   oursGltf: {decoderPath: '/pkg/gltf/'},
   oursAsmjs: {decoderPath: '/pkg/', asmjs: true},
-  oursLite: {decoderPath: '/pkg/lite/'},
+  oursWithPath: {decoderPath: '/pkg/', dracoUvPath: '/pkg/'},
 };
 
 /**
@@ -199,6 +216,9 @@ async function checkGlb(t, glb) {
   const result = await t.load(glb, glb.kind === 'coarse' ? 'three' : 'ours');
   check(!result.warnings.some((w) => w.includes(kUnknownWarning)),
         `${glb.name}: "${kUnknownWarning}" with the plugin registered`);
+  check(glb.kind === 'lossy' ? result.partRequests > 0 :
+                               result.partRequests === 0,
+        `${glb.name}: ${kPart} requested ${result.partRequests} times`);
   let lossy;
   if (glb.kind === 'lossless') {
     t.same(result, `${glb.name} with the package's decoder`);
@@ -264,13 +284,19 @@ async function checkAsset(page, glbs, once) {
            `${marked.name} with the package's gltf/ decoder`);
     t.same(await t.load(marked, 'oursAsmjs'),
            `${marked.name} with the package's asm.js decoder`);
-    t.same(await t.load(marked, 'oursLite'),
-           `${marked.name} with the package's lite/ decoder`);
     const lossy = glbs.find((g) => g.kind === 'lossy');
-    const lite = await t.load(lossy, 'oursLite');
-    check(/Decoding failed: \S/.test(lite.error || ''),
-          `${lossy.name} with the package's lite/ decoder: ` +
-          (lite.error || 'loaded without an error'));
+    const unaided = await t.load(lossy, 'ours', false);
+    check(/Decoding failed: .*draco_decoder_laplacian\.wasm.*dracoUvPath/
+              .test(unaided.error || '') && unaided.partRequests === 0,
+          `${lossy.name} without the plugin: ` +
+          (unaided.error || 'loaded without an error') +
+          `; ${kPart} requested ${unaided.partRequests} times`);
+    const configured = await t.load(lossy, 'oursWithPath', false);
+    check(!configured.error && configured.partRequests > 0 &&
+              configured.nonBackground === t.reference.nonBackground,
+          `${lossy.name} without the plugin, decoderConfig.dracoUvPath ` +
+          `set: ${configured.error || `${configured.nonBackground} ` +
+          `model pixels, ${kPart} requested ${configured.partRequests} times`}`);
   }
 }
 
@@ -307,7 +333,7 @@ function prerequisites() {
   const packageDir = path.resolve(env('DRACO_UV_WEB_PACKAGE'));
   for (const file of ['draco_wasm_wrapper.js', 'three-plugin.mjs',
                       'gltf/draco_wasm_wrapper.js', 'draco_decoder.js',
-                      'lite/draco_wasm_wrapper.js']) {
+                      kPart]) {
     if (!fs.existsSync(path.join(packageDir, file))) {
       console.error(`three_browser_test: ${packageDir} has no ${file} ` +
                     '(./draco-uv.sh web builds the package)');
