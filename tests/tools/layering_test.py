@@ -29,8 +29,8 @@ schemes and web/ and is included by nothing of ours.
 
 Also: only prediction_schemes/laplacian/ and draco_ext/linalg/ include
 Eigen, and options/ includes no Laplacian header but the light
-uv_laplacian_settings.h, so that a lossless-only build
-(DRACO_UV_LAPLACIAN=OFF) compiles neither.
+uv_laplacian_settings.h outside an #ifdef DRACO_UV_LAPLACIAN block, so that
+a lossless-only build (DRACO_UV_LAPLACIAN=OFF) compiles neither.
 
 Every folder of both roots must be in the table, and every folder of the
 table must exist and hold a header.
@@ -79,6 +79,27 @@ EIGEN_FOLDERS = {'prediction_schemes/laplacian', LINALG}
 # The only Laplacian header that builds without the Laplacian coder.
 LIGHT_LAPLACIAN = 'prediction_schemes/laplacian/uv_laplacian_settings.h'
 INCLUDE = re.compile(r'^\s*#\s*include\s+[<"]([^>"]+)[>"]', re.M)
+
+
+LAPLACIAN_GUARD = re.compile(r'^\s*#\s*(ifdef\s+DRACO_UV_LAPLACIAN\b|if|endif)',
+                             re.M)
+
+
+def inside_laplacian_guard(text, header):
+    """Whether every #include of |header| in |text| is inside an
+    #ifdef DRACO_UV_LAPLACIAN block (nested #if blocks allowed)."""
+    for include in re.finditer(r'^\s*#\s*include\s+[<"]' + re.escape(header),
+                               text, re.M):
+        stack = []
+        for directive in LAPLACIAN_GUARD.finditer(text, 0, include.start()):
+            if directive.group(1) == 'endif':
+                if stack:
+                    stack.pop()
+            else:
+                stack.append(directive.group(1).startswith('ifdef'))
+        if True not in stack:
+            return False
+    return True
 
 
 def folder_of(relative):
@@ -135,7 +156,8 @@ def violations(source_root):
                     yield f'{path}: {folder}/ must not include {header}'
                 if (folder == OPTIONS and
                         target == 'prediction_schemes/laplacian' and
-                        header != LIGHT_LAPLACIAN):
+                        header != LIGHT_LAPLACIAN and
+                        not inside_laplacian_guard(text, header)):
                     yield (f'{path}: {OPTIONS}/ may include only '
                            f'{LIGHT_LAPLACIAN}')
 
