@@ -257,16 +257,11 @@ class GeometricTangentPredictor {
   // Brings component |c| of every point value below 2^|bits| (minus the
   // smallest and shifted right) where the largest is not already.
   void FitBelow(int c, int num_components, int bits);
-  template <GeometricTangentKind kind, bool count>
-  void SumFaces(const TangentConnectivity &connectivity);
-  template <GeometricTangentKind kind>
-  void SumFaces(const TangentConnectivity &connectivity, bool count) {
-    if (count) {
-      SumFaces<kind, true>(connectivity);
-    } else {
-      SumFaces<kind, false>(connectivity);
-    }
-  }
+  // Adds every triangle's part to sums_ (for kind_), and with |count| to
+  // face_sums_. One loop for all kinds: the kinds' branches cost little
+  // beside a triangle's arithmetic, copies of the loop per kind 7 KB of
+  // WebAssembly.
+  void SumFaces(const TangentConnectivity &connectivity, bool count);
   // The plane normal of |entry| for kMikkTSpace and kUniform, below
   // 2^kPlaneNormalBits.
   TangentVec3 VertexNormal(const TangentConnectivity &connectivity,
@@ -304,17 +299,7 @@ inline void GeometricTangentPredictor::ComputeSums(
       kind_ == GeometricTangentKind::kFace ||
       3 * int64_t{connectivity.num_faces} >= kMaxCornersPerEntry;
   face_sums_.assign(count ? num_entries + 1 : 0, FaceSums());
-  switch (kind_) {
-    case GeometricTangentKind::kMikkTSpace:
-      SumFaces<GeometricTangentKind::kMikkTSpace>(connectivity, count);
-      break;
-    case GeometricTangentKind::kUniform:
-      SumFaces<GeometricTangentKind::kUniform>(connectivity, count);
-      break;
-    case GeometricTangentKind::kFace:
-      SumFaces<GeometricTangentKind::kFace>(connectivity, count);
-      break;
-  }
+  SumFaces(connectivity, count);
 }
 
 // Per triangle: MikkTSpace's tangent (InitTriInfo(): vOs with the sign of
@@ -378,9 +363,10 @@ inline void GeometricTangentPredictor::FitBelow(int first, int num_components,
 // added to the entries of its corners. Positions below 2^15 and texture
 // coordinates below 2^14 bound the gradient below 2^30 and the normal
 // below 2^31.
-template <GeometricTangentKind kind, bool count>
-void GeometricTangentPredictor::SumFaces(
-    const TangentConnectivity &connectivity) {
+inline void GeometricTangentPredictor::SumFaces(
+    const TangentConnectivity &connectivity, bool count) {
+  const bool angle_weights = kind_ == GeometricTangentKind::kMikkTSpace;
+  const bool face_normals = kind_ == GeometricTangentKind::kFace;
   const Mesh &mesh = *connectivity.mesh;
   const uint32_t *const corner_entry = connectivity.corner_entry.data();
   Sums *const all_sums = sums_.data();
@@ -417,11 +403,10 @@ void GeometricTangentPredictor::SumFaces(
     }
     const TangentVec3 direction = ToUnitLength(gradient, gradient_squared);
     const std::array<int32_t, 3> weight =
-        kind == GeometricTangentKind::kMikkTSpace
-            ? CornerAngles(e1, e2, IntSqrtFloor(normal_squared))
-            : std::array<int32_t, 3>{1, 1, 1};
-    TangentVec3 unit_normal;
-    if (kind == GeometricTangentKind::kFace) {
+        angle_weights ? CornerAngles(e1, e2, IntSqrtFloor(normal_squared))
+                      : std::array<int32_t, 3>{1, 1, 1};
+    TangentVec3 unit_normal = {0, 0, 0};
+    if (face_normals) {
       unit_normal = ToUnitLength(normal, normal_squared);
     }
     for (int k = 0; k < 3; ++k) {
@@ -433,7 +418,7 @@ void GeometricTangentPredictor::SumFaces(
         }
         ++face_sums.num_faces;
         face_sums.last_face = f;
-        if (kind == GeometricTangentKind::kFace) {
+        if (face_normals) {
           for (int i = 0; i < 3; ++i) {
             face_sums.normal[i] += unit_normal[i];
           }
