@@ -26,6 +26,17 @@
 #include "draco/core/macros.h"
 #include "draco_ext/common/threads.h"
 
+// Keeps a function out of the loops that call it: for the once-per-chunk
+// work, which inlined into the consumer's per-item loop made that loop
+// slower (2 % more decode instructions of the weighted schemes with GCC).
+#if defined(__GNUC__) || defined(__clang__)
+#define DRACO_UV_LOOKAHEAD_NOINLINE __attribute__((noinline))
+#elif defined(_MSC_VER)
+#define DRACO_UV_LOOKAHEAD_NOINLINE __declspec(noinline)
+#else
+#define DRACO_UV_LOOKAHEAD_NOINLINE
+#endif
+
 namespace draco {
 
 // Provides items 0 .. n - 1 of a sequence, in increasing order, where item
@@ -106,7 +117,7 @@ class UvLookahead {
   }
 
   // Points current_ at the items of |chunk|.
-  void MakeAvailable(int chunk) {
+  DRACO_UV_LOOKAHEAD_NOINLINE void MakeAvailable(int chunk) {
     if (threaded_ && done_[chunk].load(std::memory_order_acquire)) {
       current_ = items_.get() + chunk * kChunk;
       return;
