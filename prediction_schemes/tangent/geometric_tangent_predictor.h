@@ -257,10 +257,11 @@ class GeometricTangentPredictor {
   // Brings component |c| of every point value below 2^|bits| (minus the
   // smallest and shifted right) where the largest is not already.
   void FitBelow(int c, int num_components, int bits);
-  // Adds every triangle's part to sums_ (for kind_), and with |count| to
-  // face_sums_. One loop for all kinds: the kinds' branches cost little
-  // beside a triangle's arithmetic, copies of the loop per kind 7 KB of
-  // WebAssembly.
+  // Adds every triangle's part to sums_, and with |count| to face_sums_.
+  // One copy per kind, whose branches would cost a tenth of the loop's
+  // instructions; |count| is a flag (a copy per value cost 4 KB of
+  // WebAssembly).
+  template <GeometricTangentKind kind>
   void SumFaces(const TangentConnectivity &connectivity, bool count);
   // The plane normal of |entry| for kMikkTSpace and kUniform, below
   // 2^kPlaneNormalBits.
@@ -299,7 +300,17 @@ inline void GeometricTangentPredictor::ComputeSums(
       kind_ == GeometricTangentKind::kFace ||
       3 * int64_t{connectivity.num_faces} >= kMaxCornersPerEntry;
   face_sums_.assign(count ? num_entries + 1 : 0, FaceSums());
-  SumFaces(connectivity, count);
+  switch (kind_) {
+    case GeometricTangentKind::kMikkTSpace:
+      SumFaces<GeometricTangentKind::kMikkTSpace>(connectivity, count);
+      break;
+    case GeometricTangentKind::kUniform:
+      SumFaces<GeometricTangentKind::kUniform>(connectivity, count);
+      break;
+    case GeometricTangentKind::kFace:
+      SumFaces<GeometricTangentKind::kFace>(connectivity, count);
+      break;
+  }
 }
 
 // Per triangle: MikkTSpace's tangent (InitTriInfo(): vOs with the sign of
@@ -363,10 +374,11 @@ inline void GeometricTangentPredictor::FitBelow(int first, int num_components,
 // added to the entries of its corners. Positions below 2^15 and texture
 // coordinates below 2^14 bound the gradient below 2^30 and the normal
 // below 2^31.
-inline void GeometricTangentPredictor::SumFaces(
+template <GeometricTangentKind kind>
+void GeometricTangentPredictor::SumFaces(
     const TangentConnectivity &connectivity, bool count) {
-  const bool angle_weights = kind_ == GeometricTangentKind::kMikkTSpace;
-  const bool face_normals = kind_ == GeometricTangentKind::kFace;
+  constexpr bool angle_weights = kind == GeometricTangentKind::kMikkTSpace;
+  constexpr bool face_normals = kind == GeometricTangentKind::kFace;
   const Mesh &mesh = *connectivity.mesh;
   const uint32_t *const corner_entry = connectivity.corner_entry.data();
   Sums *const all_sums = sums_.data();
