@@ -50,6 +50,15 @@ inline int MaxThreads() { return threads_internal::MaxThreadsSetting().load(); }
 // namespace draco it says that it caps draco-uv's threads, not Draco's.
 inline void SetUvMaxThreads(int max_threads) { SetMaxThreads(max_threads); }
 
+// Whether this build can start threads at all: not a WebAssembly build
+// without threads, where std::thread aborts. Code that only runs on a second
+// thread can be left out of such builds with `if constexpr`.
+#if defined(__EMSCRIPTEN__) && !defined(__EMSCRIPTEN_PTHREADS__)
+constexpr bool kBuildHasThreads = false;
+#else
+constexpr bool kBuildHasThreads = true;
+#endif
+
 // True when a second thread can run alongside this one: allowed by
 // SetMaxThreads(), more than one core this process may use (on Linux its
 // CPU affinity, so that `taskset -c 0` gives one thread), and not a

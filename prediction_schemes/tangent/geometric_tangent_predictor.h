@@ -113,10 +113,51 @@ struct GeometricTangentPrediction {
   int single_face = -1;
 };
 
+// The connectivity the tangent prediction and coding read, as plain arrays
+// taken once from the tangent attribute's Draco mesh data: the same for
+// either of Draco's corner tables, so that the prediction and the coding
+// loop are compiled once (in the WebAssembly decoder a copy per corner table
+// cost 15 KB).
+struct TangentConnectivity {
+  const Mesh *mesh = nullptr;
+  // The first corner of every entry (Draco's data_to_corner_map()).
+  const CornerIndex *data_to_corner = nullptr;
+  int num_entries = 0;
+  int num_faces = 0;
+  // Per corner of the corner table's faces, the entry at its vertex;
+  // num_entries for a vertex without one (or out of the table's range).
+  std::vector<uint32_t> corner_entry;
+};
+
+// Fills |connectivity| from |mesh_data| (a MeshPredictionSchemeData).
+template <class MeshDataT>
+void InitTangentConnectivity(const MeshDataT &mesh_data,
+                             TangentConnectivity *connectivity) {
+  const auto &table = *mesh_data.corner_table();
+  const std::vector<int32_t> &vertex_to_data = *mesh_data.vertex_to_data_map();
+  const uint32_t num_entries =
+      static_cast<uint32_t>(mesh_data.data_to_corner_map()->size());
+  const uint32_t num_vertices = static_cast<uint32_t>(
+      std::min<size_t>(table.num_vertices(), vertex_to_data.size()));
+  connectivity->mesh = mesh_data.mesh();
+  connectivity->data_to_corner = mesh_data.data_to_corner_map()->data();
+  connectivity->num_entries = static_cast<int>(num_entries);
+  connectivity->num_faces = table.num_faces();
+  connectivity->corner_entry.resize(3 * static_cast<size_t>(table.num_faces()));
+  uint32_t *const corner_entry = connectivity->corner_entry.data();
+  for (uint32_t c = 0; c < connectivity->corner_entry.size(); ++c) {
+    const uint32_t vertex = table.ConfidentVertex(CornerIndex(c)).value();
+    const uint32_t entry = vertex < num_vertices
+                               ? static_cast<uint32_t>(vertex_to_data[vertex])
+                               : num_entries;
+    corner_entry[c] = entry < num_entries ? entry : num_entries;
+  }
+}
+
 // Computes GeometricTangentPrediction per tangent entry from the parents:
 // quantised positions (3 integer components), octahedral normals (Draco's
 // 2 portable components) and quantised texture coordinates (2 integer
-// components), with MeshDataT the tangent attribute's Draco mesh data.
+// components), on the tangent attribute's TangentConnectivity.
 //
 // ComputeSums() visits every triangle once: its UV gradient dP/du, as
 // MikkTSpace's vOs = dv2 e1 - dv1 e2 with the sign of the UV area,
@@ -146,7 +187,6 @@ struct GeometricTangentPrediction {
 // few texels wide). MikkTSpace projects the edges onto the normal plane
 // before measuring a corner's angle; here the 3D angle is used, and
 // approximated within 0.072 radian (tangent_geometry.h).
-template <class MeshDataT>
 class GeometricTangentPredictor {
  public:
   // Takes a parent attribute by its type; false for one the prediction
@@ -172,14 +212,14 @@ class GeometricTangentPredictor {
   }
 
   // Sums every triangle's part of the predictions of |kind| into the
-  // entries of |mesh_data|; |normal_bits| are the normals' octahedral bits.
-  // Call before Predict().
-  void ComputeSums(const MeshDataT &mesh_data, GeometricTangentKind kind,
-                   int normal_bits);
+  // entries of |connectivity|; |normal_bits| are the normals' octahedral
+  // bits. Call before Predict().
+  void ComputeSums(const TangentConnectivity &connectivity,
+                   GeometricTangentKind kind, int normal_bits);
 
   // The prediction of |entry|.
   DRACO_UV_TANGENT_INLINE GeometricTangentPrediction
-  Predict(const MeshDataT &mesh_data, int entry) const;
+  Predict(const TangentConnectivity &connectivity, int entry) const;
 
  private:
   // Positions and texture coordinates are brought below these (see above).
@@ -217,21 +257,16 @@ class GeometricTangentPredictor {
   // Brings component |c| of every point value below 2^|bits| (minus the
   // smallest and shifted right) where the largest is not already.
   void FitBelow(int c, int num_components, int bits);
-  // Fills vertex_entry_.
-  void MapVertices(const MeshDataT &mesh_data);
-  template <GeometricTangentKind kind, bool count>
-  void SumFaces(const MeshDataT &mesh_data);
+  // Adds every triangle's part to sums_, and with |count| to face_sums_.
+  // One copy per kind, whose branches would cost a tenth of the loop's
+  // instructions; |count| is a flag (a copy per value cost 4 KB of
+  // WebAssembly).
   template <GeometricTangentKind kind>
-  void SumFaces(const MeshDataT &mesh_data, bool count) {
-    if (count) {
-      SumFaces<kind, true>(mesh_data);
-    } else {
-      SumFaces<kind, false>(mesh_data);
-    }
-  }
+  void SumFaces(const TangentConnectivity &connectivity, bool count);
   // The plane normal of |entry| for kMikkTSpace and kUniform, below
   // 2^kPlaneNormalBits.
-  TangentVec3 VertexNormal(const MeshDataT &mesh_data, int entry) const;
+  TangentVec3 VertexNormal(const TangentConnectivity &connectivity,
+                           int entry) const;
 
   const PointAttribute *positions_ = nullptr;
   const PointAttribute *normals_ = nullptr;
@@ -245,38 +280,35 @@ class GeometricTangentPredictor {
   std::unique_ptr<PointValues[]> point_values_;
   size_t num_points_ = 0;
   size_t point_values_capacity_ = 0;
-  // The entry of every vertex of the tangent's corner table, the number of
-  // entries for vertices without one (whose corners then add to the dummy
-  // sums past the last entry).
-  std::vector<uint32_t> vertex_entry_;
   // Per entry, and one dummy past the last.
   std::vector<Sums> sums_;
   std::vector<FaceSums> face_sums_;
 };
 
-template <class MeshDataT>
-void GeometricTangentPredictor<MeshDataT>::ComputeSums(
-    const MeshDataT &mesh_data, GeometricTangentKind kind, int normal_bits) {
+inline void GeometricTangentPredictor::ComputeSums(
+    const TangentConnectivity &connectivity, GeometricTangentKind kind,
+    int normal_bits) {
   kind_ = kind;
   normal_bits_ = normal_bits;
   normal_values_.Init(*normals_);
-  GatherPointValues(*mesh_data.mesh());
-  const size_t num_entries = mesh_data.data_to_corner_map()->size();
+  GatherPointValues(*connectivity.mesh);
+  const size_t num_entries = connectivity.num_entries;
+  // Corners of vertices without an entry add to the dummy sums past the
+  // last entry.
   sums_.assign(num_entries + 1, Sums());
-  MapVertices(mesh_data);
-  const bool count = kind_ == GeometricTangentKind::kFace ||
-                     3 * int64_t{mesh_data.corner_table()->num_faces()} >=
-                         kMaxCornersPerEntry;
+  const bool count =
+      kind_ == GeometricTangentKind::kFace ||
+      3 * int64_t{connectivity.num_faces} >= kMaxCornersPerEntry;
   face_sums_.assign(count ? num_entries + 1 : 0, FaceSums());
   switch (kind_) {
     case GeometricTangentKind::kMikkTSpace:
-      SumFaces<GeometricTangentKind::kMikkTSpace>(mesh_data, count);
+      SumFaces<GeometricTangentKind::kMikkTSpace>(connectivity, count);
       break;
     case GeometricTangentKind::kUniform:
-      SumFaces<GeometricTangentKind::kUniform>(mesh_data, count);
+      SumFaces<GeometricTangentKind::kUniform>(connectivity, count);
       break;
     case GeometricTangentKind::kFace:
-      SumFaces<GeometricTangentKind::kFace>(mesh_data, count);
+      SumFaces<GeometricTangentKind::kFace>(connectivity, count);
       break;
   }
 }
@@ -286,8 +318,7 @@ void GeometricTangentPredictor<MeshDataT>::ComputeSums(
 // added to the entries of its corners. Positions below 2^15 and texture
 // coordinates below 2^14 bound the gradient below 2^30 and the normal
 // below 2^31.
-template <class MeshDataT>
-void GeometricTangentPredictor<MeshDataT>::GatherPointValues(
+inline void GeometricTangentPredictor::GatherPointValues(
     const Mesh &mesh) {
   TangentParentValues<3> positions;
   TangentParentValues<2> tex_coords;
@@ -319,10 +350,8 @@ void GeometricTangentPredictor<MeshDataT>::GatherPointValues(
   }
 }
 
-template <class MeshDataT>
-void GeometricTangentPredictor<MeshDataT>::FitBelow(int first,
-                                                    int num_components,
-                                                    int bits) {
+inline void GeometricTangentPredictor::FitBelow(int first, int num_components,
+                                                int bits) {
   int64_t min = INT32_MAX, max = INT32_MIN;
   for (size_t p = 0; p < num_points_; ++p) {
     for (int c = first; c < first + num_components; ++c) {
@@ -340,35 +369,20 @@ void GeometricTangentPredictor<MeshDataT>::FitBelow(int first,
   }
 }
 
-template <class MeshDataT>
-void GeometricTangentPredictor<MeshDataT>::MapVertices(
-    const MeshDataT &mesh_data) {
-  const std::vector<int32_t> &vertex_to_data = *mesh_data.vertex_to_data_map();
-  const uint32_t num_entries = static_cast<uint32_t>(sums_.size()) - 1;
-  vertex_entry_.resize(mesh_data.corner_table()->num_vertices());
-  for (size_t v = 0; v < vertex_entry_.size(); ++v) {
-    const uint32_t entry = v < vertex_to_data.size()
-                               ? static_cast<uint32_t>(vertex_to_data[v])
-                               : num_entries;
-    vertex_entry_[v] = entry < num_entries ? entry : num_entries;
-  }
-}
-
 // Per triangle: MikkTSpace's tangent (InitTriInfo(): vOs with the sign of
 // the UV orientation), normalised, and its corner angles (EvalTspace()),
 // added to the entries of its corners. Positions below 2^15 and texture
 // coordinates below 2^14 bound the gradient below 2^30 and the normal
 // below 2^31.
-template <class MeshDataT>
-template <GeometricTangentKind kind, bool count>
-void GeometricTangentPredictor<MeshDataT>::SumFaces(
-    const MeshDataT &mesh_data) {
-  const Mesh &mesh = *mesh_data.mesh();
-  const auto &table = *mesh_data.corner_table();
-  const uint32_t *const vertex_entry = vertex_entry_.data();
-  const uint32_t num_vertices = static_cast<uint32_t>(vertex_entry_.size());
+template <GeometricTangentKind kind>
+void GeometricTangentPredictor::SumFaces(
+    const TangentConnectivity &connectivity, bool count) {
+  constexpr bool angle_weights = kind == GeometricTangentKind::kMikkTSpace;
+  constexpr bool face_normals = kind == GeometricTangentKind::kFace;
+  const Mesh &mesh = *connectivity.mesh;
+  const uint32_t *const corner_entry = connectivity.corner_entry.data();
   Sums *const all_sums = sums_.data();
-  const int num_faces = table.num_faces();
+  const int num_faces = connectivity.num_faces;
   for (int f = 0; f < num_faces; ++f) {
     const Mesh::Face &points = mesh.face(FaceIndex(f));
     const PointValues &p0 = point_values_[points[0].value()];
@@ -401,20 +415,14 @@ void GeometricTangentPredictor<MeshDataT>::SumFaces(
     }
     const TangentVec3 direction = ToUnitLength(gradient, gradient_squared);
     const std::array<int32_t, 3> weight =
-        kind == GeometricTangentKind::kMikkTSpace
-            ? CornerAngles(e1, e2, IntSqrtFloor(normal_squared))
-            : std::array<int32_t, 3>{1, 1, 1};
-    TangentVec3 unit_normal;
-    if (kind == GeometricTangentKind::kFace) {
+        angle_weights ? CornerAngles(e1, e2, IntSqrtFloor(normal_squared))
+                      : std::array<int32_t, 3>{1, 1, 1};
+    TangentVec3 unit_normal = {0, 0, 0};
+    if (face_normals) {
       unit_normal = ToUnitLength(normal, normal_squared);
     }
     for (int k = 0; k < 3; ++k) {
-      const uint32_t vertex =
-          table.ConfidentVertex(CornerIndex(3 * f + k)).value();
-      // Entries of no vertex add to the dummy sums past the last entry.
-      const uint32_t entry = vertex < num_vertices
-                                 ? vertex_entry[vertex]
-                                 : static_cast<uint32_t>(sums_.size()) - 1;
+      const uint32_t entry = corner_entry[3 * f + k];
       if (count) {
         FaceSums &face_sums = face_sums_[entry];
         if (face_sums.num_faces >= kMaxCornersPerEntry) {
@@ -422,7 +430,7 @@ void GeometricTangentPredictor<MeshDataT>::SumFaces(
         }
         ++face_sums.num_faces;
         face_sums.last_face = f;
-        if (kind == GeometricTangentKind::kFace) {
+        if (face_normals) {
           for (int i = 0; i < 3; ++i) {
             face_sums.normal[i] += unit_normal[i];
           }
@@ -438,11 +446,10 @@ void GeometricTangentPredictor<MeshDataT>::SumFaces(
   }
 }
 
-template <class MeshDataT>
-TangentVec3 GeometricTangentPredictor<MeshDataT>::VertexNormal(
-    const MeshDataT &mesh_data, int entry) const {
-  const PointIndex point = mesh_data.mesh()->CornerToPointId(
-      (*mesh_data.data_to_corner_map())[entry]);
+inline TangentVec3 GeometricTangentPredictor::VertexNormal(
+    const TangentConnectivity &connectivity, int entry) const {
+  const PointIndex point =
+      connectivity.mesh->CornerToPointId(connectivity.data_to_corner[entry]);
   int32_t octahedral[2];
   normal_values_.Get(point, octahedral);
   const TangentVec3 normal =
@@ -454,9 +461,9 @@ TangentVec3 GeometricTangentPredictor<MeshDataT>::VertexNormal(
 
 // MikkTSpace's EvalTspace(): the weighted sum of the triangles' gradients
 // around the vertex, projected onto the normal plane.
-template <class MeshDataT>
-GeometricTangentPrediction GeometricTangentPredictor<MeshDataT>::Predict(
-    const MeshDataT &mesh_data, int entry) const {
+DRACO_UV_TANGENT_INLINE GeometricTangentPrediction
+GeometricTangentPredictor::Predict(const TangentConnectivity &connectivity,
+                                   int entry) const {
   GeometricTangentPrediction prediction;
   const Sums &sums = sums_[entry];
   prediction.handedness = sums.orientation >= 0 ? 1 : -1;
@@ -474,7 +481,7 @@ GeometricTangentPrediction GeometricTangentPredictor<MeshDataT>::Predict(
         face_sums.normal,
         ShiftBelow(MaxAbsBits(face_sums.normal), kPlaneNormalBits));
   } else {
-    plane_normal = VertexNormal(mesh_data, entry);
+    plane_normal = VertexNormal(connectivity, entry);
     prediction.tangent = ProjectOntoPlane(direction, plane_normal);
   }
   const uint64_t squared = SquaredLength(prediction.tangent);

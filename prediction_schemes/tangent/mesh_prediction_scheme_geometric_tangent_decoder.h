@@ -26,6 +26,85 @@
 
 namespace draco {
 
+// The CoderT of CodeGeometricTangents() that decodes: values from the
+// residual streams, the handedness and copies from exceptions where the
+// configuration says so.
+class GeometricTangentDecodingCoder {
+ public:
+  GeometricTangentDecodingCoder(UvResidualDecoder *residuals,
+                                const GeometricTangentConfig &config,
+                                TangentExceptions *handedness_exceptions,
+                                TangentExceptions *copy_exceptions)
+      : residuals_(residuals),
+        max_value_(config.coding.grid.max_value),
+        handedness_exceptions_(config.handedness_exceptions
+                                   ? handedness_exceptions
+                                   : nullptr),
+        copy_exceptions_(config.copy_exceptions ? copy_exceptions : nullptr) {}
+  bool Value(int context, int32_t predicted, int32_t sign, int32_t *value) {
+    int32_t residual;
+    if (!residuals_->Next(context, &residual)) {
+      return false;
+    }
+    const int64_t result = int64_t{predicted} + int64_t{sign} * residual;
+    if (static_cast<uint64_t>(result) > static_cast<uint64_t>(max_value_)) {
+      return false;
+    }
+    *value = static_cast<int32_t>(result);
+    return true;
+  }
+  bool Handedness(int entry, const std::array<int32_t, 2> &predicted,
+                  int32_t *w) {
+    int32_t symbol = 0;
+    if (handedness_exceptions_ != nullptr) {
+      handedness_exceptions_->Take(entry, &symbol);
+    } else if (!residuals_->Next(kTangentHandednessContext, &symbol)) {
+      return false;
+    }
+    return HandednessFromSymbol(symbol, predicted, max_value_, w);
+  }
+  bool Copy(int entry, const int32_t *source, int32_t *v) {
+    int32_t unused;
+    if (copy_exceptions_ != nullptr &&
+        !copy_exceptions_->Take(entry, &unused)) {
+      std::copy(source, source + kTangentNumComponents, v);
+      return true;
+    }
+    for (int c = 0; c < kTangentNumComponents; ++c) {
+      if (!Value(kTangentCopyContext, source[c], 1, &v[c])) {
+        return false;
+      }
+    }
+    return true;
+  }
+
+ private:
+  UvResidualDecoder *residuals_;
+  int32_t max_value_;
+  TangentExceptions *handedness_exceptions_;
+  TangentExceptions *copy_exceptions_;
+};
+
+// Decodes the tangents of |connectivity| into |values| as |config| says,
+// with |predictor|'s parents set; the work of
+// MeshPredictionSchemeGeometricTangentDecoder::ComputeOriginalValues(),
+// compiled once for both of Draco's corner tables.
+inline bool DecodeGeometricTangents(const TangentConnectivity &connectivity,
+                                    const GeometricTangentConfig &config,
+                                    GeometricTangentPredictor *predictor,
+                                    UvResidualDecoder *residuals,
+                                    TangentExceptions *handedness_exceptions,
+                                    TangentExceptions *copy_exceptions,
+                                    int32_t *values) {
+  predictor->ComputeSums(connectivity, config.kind, config.normal_bits);
+  GeometricTangentDecodingCoder coder(residuals, config, handedness_exceptions,
+                                      copy_exceptions);
+  return CodeGeometricTangents(
+      connectivity, config.coding,
+      [&](int entry) { return predictor->Predict(connectivity, entry); },
+      &coder, values);
+}
+
 // Decodes tangents written by MeshPredictionSchemeGeometricTangentEncoder:
 // checks the guard, the format version and the configuration, reads the
 // residual streams and the transform data, then rebuilds every entry in
@@ -93,66 +172,12 @@ class MeshPredictionSchemeGeometricTangentDecoder
   }
 
  private:
-  class Coder {
-   public:
-    Coder(UvResidualDecoder *residuals, const GeometricTangentConfig &config,
-          TangentExceptions *handedness_exceptions,
-          TangentExceptions *copy_exceptions)
-        : residuals_(residuals),
-          max_value_(config.coding.grid.max_value),
-          handedness_exceptions_(config.handedness_exceptions
-                                     ? handedness_exceptions
-                                     : nullptr),
-          copy_exceptions_(config.copy_exceptions ? copy_exceptions
-                                                  : nullptr) {}
-    bool Value(int context, int32_t predicted, int32_t sign, int32_t *value) {
-      int32_t residual;
-      if (!residuals_->Next(context, &residual)) {
-        return false;
-      }
-      const int64_t result = int64_t{predicted} + int64_t{sign} * residual;
-      if (static_cast<uint64_t>(result) > static_cast<uint64_t>(max_value_)) {
-        return false;
-      }
-      *value = static_cast<int32_t>(result);
-      return true;
-    }
-    bool Handedness(int entry, const std::array<int32_t, 2> &predicted,
-                    int32_t *w) {
-      int32_t symbol = 0;
-      if (handedness_exceptions_ != nullptr) {
-        handedness_exceptions_->Take(entry, &symbol);
-      } else if (!residuals_->Next(kTangentHandednessContext, &symbol)) {
-        return false;
-      }
-      return HandednessFromSymbol(symbol, predicted, max_value_, w);
-    }
-    bool Copy(int entry, const int32_t *source, int32_t *v) {
-      int32_t unused;
-      if (copy_exceptions_ != nullptr && !copy_exceptions_->Take(entry, &unused)) {
-        std::copy(source, source + kTangentNumComponents, v);
-        return true;
-      }
-      for (int c = 0; c < kTangentNumComponents; ++c) {
-        if (!Value(kTangentCopyContext, source[c], 1, &v[c])) {
-          return false;
-        }
-      }
-      return true;
-    }
-
-   private:
-    UvResidualDecoder *residuals_;
-    int32_t max_value_;
-    TangentExceptions *handedness_exceptions_;
-    TangentExceptions *copy_exceptions_;
-  };
-
   int NumEntries() const {
     return static_cast<int>(this->mesh_data().data_to_corner_map()->size());
   }
 
-  GeometricTangentPredictor<MeshDataT> predictor_;
+  GeometricTangentPredictor predictor_;
+  TangentConnectivity connectivity_;
   UvResidualDecoder residuals_{kTangentNumContexts};
   GeometricTangentConfig config_;
   TangentExceptions handedness_exceptions_;
@@ -178,14 +203,11 @@ bool MeshPredictionSchemeGeometricTangentDecoder<DataTypeT, TransformT,
   if (any != 0) {
     return false;
   }
-  predictor_.ComputeSums(this->mesh_data(), config_.kind,
-                         config_.normal_bits);
-  Coder coder(&residuals_, config_, &handedness_exceptions_,
-              &copy_exceptions_);
-  return CodeGeometricTangents(
-      this->mesh_data(), config_.coding,
-      [&](int entry) { return predictor_.Predict(this->mesh_data(), entry); },
-      &coder, reinterpret_cast<int32_t *>(out_data));
+  InitTangentConnectivity(this->mesh_data(), &connectivity_);
+  return DecodeGeometricTangents(connectivity_, config_, &predictor_,
+                                 &residuals_, &handedness_exceptions_,
+                                 &copy_exceptions_,
+                                 reinterpret_cast<int32_t *>(out_data));
 }
 
 }  // namespace draco

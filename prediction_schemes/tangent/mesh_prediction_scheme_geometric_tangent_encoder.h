@@ -201,7 +201,8 @@ class MeshPredictionSchemeGeometricTangentEncoder
                  const int32_t *values);
 
   const GeometricTangentEncoderSettings settings_;
-  GeometricTangentPredictor<MeshDataT> predictor_;
+  GeometricTangentPredictor predictor_;
+  TangentConnectivity connectivity_;
   GeometricTangentConfig best_config_;
   std::vector<char> best_streams_;
   bool has_best_ = false;
@@ -225,15 +226,16 @@ bool MeshPredictionSchemeGeometricTangentEncoder<DataTypeT, TransformT,
   }
   const std::vector<int32_t> values(in_data, in_data + size);
   std::vector<GeometricTangentPrediction> predictions(num_entries);
+  InitTangentConnectivity(this->mesh_data(), &connectivity_);
   has_best_ = false;
   for (int k = 0; k < kNumGeometricTangentKinds; ++k) {
     const auto kind = static_cast<GeometricTangentKind>(k);
     if ((settings_.kinds & GeometricTangentKindBit(kind)) == 0) {
       continue;
     }
-    predictor_.ComputeSums(this->mesh_data(), kind, settings_.normal_bits);
+    predictor_.ComputeSums(connectivity_, kind, settings_.normal_bits);
     for (int entry = 0; entry < num_entries; ++entry) {
-      predictions[entry] = predictor_.Predict(this->mesh_data(), entry);
+      predictions[entry] = predictor_.Predict(connectivity_, entry);
     }
     GeometricTangentConfig config;
     config.kind = kind;
@@ -331,7 +333,7 @@ bool MeshPredictionSchemeGeometricTangentEncoder<DataTypeT, TransformT,
   GeometricTangentConfig tuned = config;
   std::vector<int8_t> sums(predictions.size(), -1);
   NullCoder null_coder;
-  if (!CodeGeometricTangents(this->mesh_data(), config.coding, predict,
+  if (!CodeGeometricTangents(connectivity_, config.coding, predict,
                              &null_coder, read_only, &sums)) {
     return false;
   }
@@ -339,7 +341,7 @@ bool MeshPredictionSchemeGeometricTangentEncoder<DataTypeT, TransformT,
   // Then the handedness and the copies as tokens or as exceptions,
   // whichever is smaller.
   Coder coder(static_cast<int>(predictions.size()) * kTangentNumComponents);
-  if (!CodeGeometricTangents(this->mesh_data(), tuned.coding, predict, &coder,
+  if (!CodeGeometricTangents(connectivity_, tuned.coding, predict, &coder,
                              read_only)) {
     return false;
   }

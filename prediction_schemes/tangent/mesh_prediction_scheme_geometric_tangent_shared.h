@@ -173,7 +173,7 @@ class TangentExceptions {
 };
 
 // Codes (encodes or decodes, by CoderT) the |values| (4 per entry, in
-// entry order) of every entry of |mesh_data| with the predictions
+// entry order) of every entry of |connectivity| with the predictions
 // |predict|(entry) returns. CoderT has
 //   bool Value(int context, int32_t predicted, int32_t sign, int32_t *value);
 //   bool Handedness(int entry, const std::array<int32_t, 2> &predicted,
@@ -189,33 +189,25 @@ class TangentExceptions {
 // entries predicted from one triangle that already gave a coded neighbour
 // its value copy that value. |neighbour_sums|, when not null, receives
 // every entry's TangentNeighbourSum().
-template <class MeshDataT, class PredictFn, class CoderT>
-bool CodeGeometricTangents(const MeshDataT &mesh_data,
+template <class PredictFn, class CoderT>
+bool CodeGeometricTangents(const TangentConnectivity &connectivity,
                            const TangentCodingParameters &params,
                            PredictFn predict, CoderT *coder, int32_t *values,
                            std::vector<int8_t> *neighbour_sums = nullptr) {
-  const auto &table = *mesh_data.corner_table();
-  const int32_t *const vertex_to_data = mesh_data.vertex_to_data_map()->data();
-  const uint32_t num_vertices =
-      static_cast<uint32_t>(mesh_data.vertex_to_data_map()->size());
-  const CornerIndex *const data_to_corner =
-      mesh_data.data_to_corner_map()->data();
-  const int num_entries =
-      static_cast<int>(mesh_data.data_to_corner_map()->size());
+  const uint32_t *const corner_entry = connectivity.corner_entry.data();
+  const uint32_t num_corners =
+      static_cast<uint32_t>(connectivity.corner_entry.size());
+  const CornerIndex *const data_to_corner = connectivity.data_to_corner;
+  const int num_entries = connectivity.num_entries;
   // Per coded entry: its first residual's bit length and its single
   // triangle. int32_t: stores of a char type would make the compiler reload
   // everything else.
   std::vector<int32_t> first_bits(num_entries);
   std::vector<int32_t> single_face(num_entries);
   // The entry at the vertex of |corner| if it is coded before |entry|.
-  const auto coded_neighbour = [&](CornerIndex corner, int entry) {
-    if (corner == kInvalidCornerIndex) {
-      return -1;
-    }
-    const uint32_t vertex = table.Vertex(corner).value();
-    const int data = vertex < num_vertices ? vertex_to_data[vertex] : -1;
-    return static_cast<uint32_t>(data) < static_cast<uint32_t>(entry) ? data
-                                                                      : -1;
+  const auto coded_neighbour = [&](uint32_t corner, int entry) {
+    const uint32_t data = corner_entry[corner];
+    return data < static_cast<uint32_t>(entry) ? static_cast<int>(data) : -1;
   };
   // The neighbour classes of every pair of neighbours' first_bits (+1, 0:
   // no neighbour), and what the encoder's first pass records.
@@ -237,9 +229,17 @@ bool CodeGeometricTangents(const MeshDataT &mesh_data,
   TangentComponentPredictor components(params);
   for (int entry = 0; entry < num_entries; ++entry) {
     int32_t *const v = values + kTangentNumComponents * entry;
-    const CornerIndex corner = data_to_corner[entry];
-    const int left = coded_neighbour(table.Next(corner), entry);
-    const int right = coded_neighbour(table.Previous(corner), entry);
+    // Next() and Previous() of the entry's corner, as in every corner
+    // table; no neighbours for a corner out of range (corrupt data).
+    const uint32_t corner = data_to_corner[entry].value();
+    const uint32_t face = corner - corner % 3;
+    const bool in_range = corner < num_corners;
+    const int left =
+        in_range ? coded_neighbour(corner == face + 2 ? face : corner + 1, entry)
+                 : -1;
+    const int right =
+        in_range ? coded_neighbour(corner == face ? face + 2 : corner - 1, entry)
+                 : -1;
     const GeometricTangentPrediction prediction = predict(entry);
     single_face[entry] = prediction.single_face;
     int source = -1;

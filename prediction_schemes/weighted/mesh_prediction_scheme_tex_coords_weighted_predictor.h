@@ -760,11 +760,11 @@ bool RunReachPrediction(
   const int num_entries =
       static_cast<int>(mesh_data.data_to_corner_map()->size());
   predictor->StartReach(config.kind, num_entries);
-  UvLookahead<ReachStep> steps(
-      num_entries, UseLookaheadThread(*predictor, num_entries),
-      [&](int begin, int end, ReachStep *out) {
-        ComputeReachSteps(mesh_data, *predictor, begin, end, out);
-      });
+  const auto compute = [&](int begin, int end, ReachStep *out) {
+    ComputeReachSteps(mesh_data, *predictor, begin, end, out);
+  };
+  UvLookahead<ReachStep, decltype(compute)> steps(
+      num_entries, UseLookaheadThread(*predictor, num_entries), compute);
   for (int p = 0; p < num_entries; ++p) {
     const ReachStep &step = steps.Get(p);
     predictor->PredictReach(p, step.stencil, step.num_stencils, step.frame,
@@ -818,11 +818,11 @@ bool RunPlanPrediction(
   predictor->Start(config.kind, order);
   const UvStencilPlanner planner(graph, order);
   const int num_steps = static_cast<int>(order.entries.size());
-  UvLookahead<PlanStep> steps(
-      num_steps, UseLookaheadThread(*predictor, num_steps),
-      [&](int begin, int end, PlanStep *out) {
-        ComputePlanSteps(planner, order, *predictor, begin, end, out);
-      });
+  const auto compute = [&](int begin, int end, PlanStep *out) {
+    ComputePlanSteps(planner, order, *predictor, begin, end, out);
+  };
+  UvLookahead<PlanStep, decltype(compute)> steps(
+      num_steps, UseLookaheadThread(*predictor, num_steps), compute);
   for (int step = 0; step < num_steps; ++step) {
     const PlanStep &s = steps.Get(step);
     predictor->Predict(step, s.plan.stencils, s.plan.num_stencils,
