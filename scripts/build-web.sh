@@ -16,7 +16,10 @@
 #                  -sWASM=0), draco_encoder (.wasm + glue)
 #   OUT/uv-gltf/   the glTF-only decoder (DRACO_GLTF_BITSTREAM=ON: mesh
 #                  compression with the features of the glTF extension's
-#                  bitstream, no point clouds) and its asm.js fallback
+#                  bitstream, no point clouds) with every coder, for its
+#                  asm.js fallback
+#   OUT/uv-gltf-ondemand/  the package's glTF-only decoder: as uv-gltf, with
+#                  the Laplacian solver in its own draco_decoder_laplacian.wasm
 #   OUT/uv-ondemand/  the package's default decoder: every lossless coder,
 #                  and the lossy Laplacian coder's solver in a second module,
 #                  draco_decoder_laplacian.wasm, which the decoder loads only
@@ -128,7 +131,7 @@ minify() {
 #    (defines DracoDecoderModule), draco_decoder.wasm and the Laplacian part
 #    it loads on demand, draco_decoder_laplacian.wasm; draco_decoder.js
 #    (asm.js fallback, every coder in one file), and gltf/ with the same
-#    three files of the glTF-only decoder (every coder in one module);
+#    four files of the glTF-only decoder;
 #  * the npm package draco3d: package.json whose main draco3d.js exports
 #    createDecoderModule and createEncoderModule, and draco3d's file names
 #    draco_decoder_nodejs.js / draco_encoder_nodejs.js;
@@ -136,7 +139,7 @@ minify() {
 #    (defines DracoEncoderModule) and draco_encoder.wasm.
 write_package() {
   local uv="${OUT}/uv" gltf="${OUT}/uv-gltf"
-  local ondemand="${OUT}/uv-ondemand"
+  local ondemand="${OUT}/uv-ondemand" gltf_ondemand="${OUT}/uv-gltf-ondemand"
   rm -rf "${PACKAGE_DIR}"
   mkdir -p "${PACKAGE_DIR}/gltf"
   cp "${ondemand}/draco/draco_decoder.wasm" \
@@ -148,14 +151,15 @@ write_package() {
   # The glTF decoder's glue names its .wasm draco_decoder_gltf.wasm; in gltf/
   # it is draco_decoder.wasm, as in three.js's folder, so that a loader that
   # lets the module find its .wasm itself finds it.
-  cp "${gltf}/draco/draco_decoder_gltf.wasm" "${PACKAGE_DIR}/gltf/draco_decoder.wasm"
+  cp "${gltf_ondemand}/draco/draco_decoder_gltf.wasm" "${PACKAGE_DIR}/gltf/draco_decoder.wasm"
+  cp "${gltf_ondemand}/draco/draco_decoder_laplacian.wasm" "${PACKAGE_DIR}/gltf/"
   local file
-  for file in draco/draco_decoder_gltf.js asmjs/draco_decoder_gltf.js; do
-    grep -q '"draco_decoder_gltf.wasm"' "${gltf}/${file}" ||
-      die "${gltf}/${file} does not name draco_decoder_gltf.wasm"
+  for file in "${gltf_ondemand}/draco/draco_decoder_gltf.js" "${gltf}/asmjs/draco_decoder_gltf.js"; do
+    grep -q '"draco_decoder_gltf.wasm"' "${file}" ||
+      die "${file} does not name draco_decoder_gltf.wasm"
   done
   sed 's/"draco_decoder_gltf\.wasm"/"draco_decoder.wasm"/' \
-    "${gltf}/draco/draco_decoder_gltf.js" >"${OUT}/draco_wasm_wrapper_gltf.js"
+    "${gltf_ondemand}/draco/draco_decoder_gltf.js" >"${OUT}/draco_wasm_wrapper_gltf.js"
   minify "${OUT}/draco_wasm_wrapper_gltf.js" "${PACKAGE_DIR}/gltf/draco_wasm_wrapper.js"
   minify "${gltf}/asmjs/draco_decoder_gltf.js" "${PACKAGE_DIR}/gltf/draco_decoder.js"
   cp web/package/* "${PACKAGE_DIR}/"
@@ -168,7 +172,9 @@ mkdir -p "${OUT}"
 configure uv "${ROOT}"
 build uv draco_decoder draco_encoder draco_decoder_asmjs
 configure uv-gltf "${ROOT}" -DDRACO_GLTF_BITSTREAM=ON
-build uv-gltf draco_decoder draco_decoder_asmjs
+build uv-gltf draco_decoder_asmjs
+configure uv-gltf-ondemand "${ROOT}" -DDRACO_GLTF_BITSTREAM=ON -DDRACO_UV_LAPLACIAN_ON_DEMAND=ON
+build uv-gltf-ondemand draco_decoder draco_decoder_laplacian
 configure uv-ondemand "${ROOT}" -DDRACO_UV_LAPLACIAN_ON_DEMAND=ON
 build uv-ondemand draco_decoder draco_decoder_laplacian
 write_package
@@ -188,7 +194,8 @@ if [[ ${check} -eq 1 ]]; then
   # without its Laplacian part the default one must refuse the lossy
   # (Laplacian) ones with an error.
   for module in draco_wasm_wrapper.js draco_decoder.js gltf/draco_wasm_wrapper.js \
-                "--without-laplacian-part draco_wasm_wrapper.js"; do
+                "--without-laplacian-part draco_wasm_wrapper.js" \
+                "--without-laplacian-part gltf/draco_wasm_wrapper.js"; do
     read -r -a args <<<"${module}"
     args[-1]="${PACKAGE_DIR}/${args[-1]}"
     log="${OUT}/check_golden.$(echo "${module}" | tr "/ " "__").log"

@@ -38,7 +38,7 @@
  * server counts its requests (no caching), none for every lossless GLB, at
  * least one for the Laplacian one. Once: the package's gltf/ decoder and its
  * asm.js fallback (setDecoderConfig({type: 'js'})) give the reference's
- * pixels; without the plugin, the Laplacian GLB fails with a decoding error
+ * pixels, and gltf/ renders the Laplacian GLB with gltf/'s own part; without the plugin, the Laplacian GLB fails with a decoding error
  * that names the part and the option dracoUvPath, without requesting the
  * part, and renders once the page sets decoderConfig.dracoUvPath itself.
  *
@@ -186,8 +186,11 @@ async function render(page, label, options, view) {
   const first = requests.length;
   const result = await page.evaluate(
       (o, v) => window.renderGlb(o, v), options, view || null);
+  const folder = options.dracoUvPath || options.decoderPath;
   result.partRequests =
       requests.slice(first).filter((p) => p.endsWith(`/${kPart}`)).length;
+  result.partRequestsElsewhere = requests.slice(first).filter(
+      (p) => p.endsWith(`/${kPart}`) && p !== `${folder}${kPart}`).length;
   const what = result.error ? `error "${result.error}"` :
       `sha256 ${result.sha256.slice(0, 16)} model pixels ${result.nonBackground}`;
   console.log(`  ${label}: ${what}; ${kPart} requested ` +
@@ -285,6 +288,14 @@ async function checkAsset(page, glbs, once) {
     t.same(await t.load(marked, 'oursAsmjs'),
            `${marked.name} with the package's asm.js decoder`);
     const lossy = glbs.find((g) => g.kind === 'lossy');
+    const viaGltf = await t.load(lossy, 'oursGltf');
+    check(!viaGltf.error && viaGltf.partRequests > 0 &&
+              viaGltf.partRequestsElsewhere === 0 &&
+              viaGltf.nonBackground === t.reference.nonBackground,
+          `${lossy.name} with the package's gltf/ decoder: ` +
+          (viaGltf.error || `${viaGltf.nonBackground} model pixels, ` +
+           `${kPart} requested ${viaGltf.partRequests} times, ` +
+           `${viaGltf.partRequestsElsewhere} of them outside gltf/`));
     const unaided = await t.load(lossy, 'ours', false);
     check(/Decoding failed: .*draco_decoder_laplacian\.wasm.*dracoUvPath/
               .test(unaided.error || '') && unaided.partRequests === 0,
@@ -333,7 +344,7 @@ function prerequisites() {
   const packageDir = path.resolve(env('DRACO_UV_WEB_PACKAGE'));
   for (const file of ['draco_wasm_wrapper.js', 'three-plugin.mjs',
                       'gltf/draco_wasm_wrapper.js', 'draco_decoder.js',
-                      kPart]) {
+                      kPart, `gltf/${kPart}`]) {
     if (!fs.existsSync(path.join(packageDir, file))) {
       console.error(`three_browser_test: ${packageDir} has no ${file} ` +
                     '(./draco-uv.sh web builds the package)');
