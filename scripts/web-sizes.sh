@@ -114,6 +114,7 @@ echo "### glTF-only decoder (\`gltf/\`)"
 echo
 echo "${header}"
 row "draco-uv \`gltf/draco_decoder.wasm\`" "${ours}/gltf/draco_decoder.wasm"
+row "draco-uv \`gltf/draco_decoder_laplacian.wasm\` (on demand)" "${ours}/gltf/draco_decoder_laplacian.wasm"
 row "stock Draco 1.5.5 (DRACO_GLTF_BITSTREAM), built the same way" "${OUT}/stock-gltf/draco_decoder_gltf.wasm"
 npm_row "three ${THREE_VERSION} \`libs/draco/gltf/draco_decoder.wasm\`" "${three}/gltf/draco_decoder.wasm"
 row "draco-uv \`gltf/draco_wasm_wrapper.js\` (terser)" "${ours}/gltf/draco_wasm_wrapper.js"
