@@ -14,11 +14,9 @@
 //
 #include "draco_ext/options/uv_prediction_options.h"
 
-#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <optional>
-#include <utility>
 #include <vector>
 
 #include "draco/core/encoder_buffer.h"
@@ -240,12 +238,11 @@ StatusOr<UvAutoChoice> ChooseSmallestUvPrediction(const Mesh &mesh, int att_id,
   DRACO_ASSIGN_OR_RETURN(choice.stock_bytes, EncodedSize(encoder));
   choice.num_encodes = 1;
   choice.bytes = choice.stock_bytes;
+  size_t best_cost = choice.stock_bytes;
   TrialEncoder trial(
       mesh, {mesh.GetNamedAttributeId(GeometryAttribute::POSITION), att_id},
       *encoder);
   std::optional<size_t> trial_stock_bytes;
-  // Candidates by cost, cheapest first, stock Draco's choice first on ties.
-  std::vector<std::pair<size_t, PredictionSchemeMethod>> ranked;
   // The candidate that stock Draco picks itself would encode the same bytes
   // as the `draco` candidate: its trial is left out.
   const PredictionSchemeMethod stock_pick =
@@ -268,24 +265,10 @@ StatusOr<UvAutoChoice> ChooseSmallestUvPrediction(const Mesh &mesh, int att_id,
     const size_t size =
         choice.stock_bytes + trial_size.value() - *trial_stock_bytes;
     const size_t cost = size + (IsSlowToDecode(method) ? slow_handicap : 0);
-    if (cost < choice.stock_bytes) {
-      ranked.emplace_back(cost, method);
-    }
-  }
-  std::stable_sort(ranked.begin(), ranked.end(),
-                   [](const auto &a, const auto &b) { return a.first < b.first; });
-  // The winner is encoded whole once: a scheme can fail on the whole mesh
-  // where it coded the reduced one (then the next candidate is tried), and
-  // its measured size is the one reported.
-  for (const auto &[cost, method] : ranked) {
-    DRACO_RETURN_IF_ERROR(
-        encoder->SetAttributePredictionScheme(att_id, method));
-    const StatusOr<size_t> size = EncodedSize(encoder);
-    ++choice.num_encodes;
-    if (size.ok()) {
-      choice.bytes = size.value();
+    if (cost < best_cost) {
+      best_cost = cost;
+      choice.bytes = size;
       choice.method = method;
-      break;
     }
   }
   DRACO_RETURN_IF_ERROR(
