@@ -324,6 +324,44 @@ TEST(MeshPredictionSchemeTexCoordsWeightedTest, RoundTripsBitExactOnDracoTestdat
   }
 }
 
+// A copy of |mesh| whose attributes are in reverse order, POSITION last, as
+// a glTF reader may give them.
+std::unique_ptr<Mesh> WithPositionLast(const Mesh &mesh) {
+  auto copy = std::make_unique<Mesh>();
+  copy->set_num_points(mesh.num_points());
+  for (FaceIndex f(0); f < mesh.num_faces(); ++f) {
+    copy->AddFace(mesh.face(f));
+  }
+  for (int i = mesh.num_attributes() - 1; i >= 0; --i) {
+    auto att = std::make_unique<PointAttribute>();
+    att->CopyFrom(*mesh.attribute(i));
+    copy->AddAttribute(std::move(att));
+  }
+  return copy;
+}
+
+// At speed 6 and above (-cl 3, 4) Edgebreaker encodes every attribute in
+// one attributes encoder; the prediction's POSITION parent must be ordered
+// within it wherever it is (patch 0015).
+TEST(MeshPredictionSchemeTexCoordsWeightedTest,
+     RoundTripsAtHighSpeedsWhateverTheAttributeOrder) {
+  const std::vector<std::string> meshes = DracoTestdataTexturedMeshes();
+  ASSERT_GE(meshes.size(), 10u);
+  for (const std::string &name : meshes) {
+    const auto mesh = ReadTestMesh(DracoTestdataPath(name));
+    ASSERT_TRUE(mesh.ok()) << name;
+    const auto reordered = WithPositionLast(*mesh.value());
+    ASSERT_NE(reordered->GetNamedAttributeId(GeometryAttribute::POSITION), 0);
+    for (const int cl : {3, 4}) {
+      for (const char *scheme : {"weighted", "weighted_multi", "portable"}) {
+        ExpectWeightedMatchesStock(*reordered, {11, 10, cl, scheme},
+                                   name + " POSITION last " + scheme +
+                                       " cl" + std::to_string(cl));
+      }
+    }
+  }
+}
+
 TEST(MeshPredictionSchemeTexCoordsWeightedTest, RoundTripsBitExactOnCorpus) {
   const std::vector<std::string> meshes = CorpusMeshPaths();
   if (meshes.empty()) {
