@@ -151,7 +151,8 @@ function dracoUvDecodeLaplacian(positions, numVertices, faces, numFaces,
     dracoUvInstance = null;
     dracoUvError = 'draco-uv: ' + (dracoUvPart ? error.message :
         'this file needs ' + DRACO_UV_PART + ': ' + error.message +
-        (/dracoUvPath/.test(error.message) ? '' : '; ' + DRACO_UV_HOWTO));
+        (/dracoUvPath|loadDracoUvLaplacian/.test(error.message) ? '' :
+             '; ' + DRACO_UV_HOWTO));
     return -1;
   }
 }

@@ -55,6 +55,7 @@ import fs from 'node:fs';
 import http from 'node:http';
 import os from 'node:os';
 import path from 'node:path';
+import {createRequire} from 'node:module';
 import {fileURLToPath} from 'node:url';
 
 const kHere = path.dirname(fileURLToPath(import.meta.url));
@@ -311,6 +312,102 @@ async function checkAsset(page, glbs, once) {
   }
 }
 
+/**
+ * Decodes a Draco file with a decoder module (page or Node); returns
+ * {uv: its first TEX_COORD as floats} or {error}. Runs in the page as source
+ * text, so it uses nothing outside itself.
+ */
+function decodeUv(draco, bytes) {
+  const decoder = new draco.Decoder();
+  const mesh = new draco.Mesh();
+  try {
+    const status = decoder.DecodeArrayToMesh(bytes, bytes.length, mesh);
+    if (!status.ok()) return {error: status.error_msg()};
+    const att = decoder.GetAttribute(
+        mesh, decoder.GetAttributeId(mesh, draco.TEX_COORD));
+    const count = mesh.num_points() * 2;
+    const ptr = draco._malloc(count * 4);
+    decoder.GetAttributeDataArrayForAllPoints(mesh, att, draco.DT_FLOAT32,
+                                              count * 4, ptr);
+    const uv = Array.from(new Float32Array(draco.HEAPF32.buffer, ptr, count));
+    draco._free(ptr);
+    return {uv};
+  } finally {
+    draco.destroy(mesh);
+    draco.destroy(decoder);
+  }
+}
+
+/**
+ * In the page, on its main thread, with no worker: loads the package's
+ * decoder from a <script> as a page using DracoDecoderModule directly does,
+ * decodes a lossless file, then a Laplacian one (which must fail, naming
+ * loadDracoUvLaplacian(), without fetching the part), awaits
+ * loadDracoUvLaplacian() and decodes it again. Returns each step's result
+ * and how many requests for the part each made.
+ */
+async function mainThreadSteps(page, files) {
+  const source = `(async (files, decodeUv) => {
+    await new Promise((resolve, reject) => {
+      const script = document.createElement('script');
+      script.src = '/pkg/draco_wasm_wrapper.js';
+      script.onload = resolve;
+      script.onerror = () => reject(new Error('cannot load the wrapper'));
+      document.head.appendChild(script);
+    });
+    const draco = await DracoDecoderModule();
+    const read = async (url) =>
+        new Int8Array(await (await fetch(url)).arrayBuffer());
+    const lossless = decodeUv(draco, await read(files.lossless));
+    const lossyBytes = await read(files.lossy);
+    const refused = decodeUv(draco, lossyBytes);
+    await draco.loadDracoUvLaplacian();
+    const lossy = decodeUv(draco, lossyBytes);
+    return {lossless: lossless.error || lossless.uv.length, refused, lossy};
+  })(${JSON.stringify(files)}, ${decodeUv.toString()})`;
+  const first = requests.length;
+  const result = await page.evaluate(source);
+  result.partRequests = requests.slice(first)
+      .filter((p) => p.endsWith(`/${kPart}`)).length;
+  return result;
+}
+
+/**
+ * The package's decoder on a page's main thread: lossless files need no
+ * part; a Laplacian file needs loadDracoUvLaplacian() first (a clear error
+ * before, one request for the part), then decodes to the values the Node
+ * package gives.
+ */
+async function checkMainThread(page, packageDir, goldenDir) {
+  const lossy = fs.readdirSync(path.join(goldenDir, 'lossy'))
+      .filter((f) => f.endsWith('.laplacian_mv.drc')).sort()[0];
+  const lossless = fs.readdirSync(goldenDir)
+      .filter((f) => f.endsWith('.weighted.drc')).sort()[0];
+  const got = await mainThreadSteps(
+      page, {lossless: `/golden/${lossless}`, lossy: `/golden/lossy/${lossy}`});
+  console.log(`main thread: ${lossless} ${got.lossless} UV values; ` +
+              `${lossy} before loadDracoUvLaplacian(): ` +
+              `${got.refused.error || 'decoded'}; after: ` +
+              `${got.lossy.error || `${got.lossy.uv.length} UV values`}; ` +
+              `${kPart} requested ${got.partRequests} times`);
+  check(typeof got.lossless === 'number' && got.lossless > 0,
+        `main thread: ${lossless}: ${got.lossless}`);
+  check(/main thread.*loadDracoUvLaplacian\(\)/.test(got.refused.error || '') &&
+            !/dracoUvPath/.test(got.refused.error),
+        `main thread: ${lossy} before loadDracoUvLaplacian(): ` +
+        (got.refused.error || 'decoded'));
+  check(got.partRequests === 1,
+        `main thread: ${kPart} requested ${got.partRequests} times, not once`);
+  const require = createRequire(import.meta.url);
+  const draco = await require(path.join(packageDir, 'draco3d.js'))
+      .createDecoderModule();
+  const node = decodeUv(draco, fs.readFileSync(path.join(goldenDir, 'lossy', lossy)));
+  check(!got.lossy.error && node.uv &&
+            JSON.stringify(got.lossy.uv) === JSON.stringify(node.uv),
+        `main thread: ${lossy} after loadDracoUvLaplacian(): ` +
+        (got.lossy.error || 'values differ from the Node package\'s'));
+}
+
 async function launch(chromium, url) {
   const {default: puppeteer} = await import('puppeteer-core');
   const browser = await puppeteer.launch({
@@ -352,15 +449,17 @@ function prerequisites() {
     }
   }
   return {chromium, packageDir, testdata: env('DRACO_TESTDATA'),
+          goldenDir: path.join(env('DRACO_UV_SOURCE_DIR'), 'testdata', 'golden'),
           transcoder: path.join(env('DRACO_UV_BUILD_DIR'), 'draco',
                                 'draco_transcoder')};
 }
 
-async function run({chromium, packageDir, testdata, transcoder}, work) {
+async function run({chromium, packageDir, testdata, transcoder, goldenDir},
+                   work) {
   const glbs = makeGlbs(transcoder, testdata, work);
   const server = await serve({
     'page': kHere, 'three': path.join(kHere, 'node_modules', 'three'),
-    'pkg': packageDir, 'glb': work});
+    'pkg': packageDir, 'glb': work, 'golden': goldenDir});
   let browser;
   try {
     const url = `http://127.0.0.1:${server.address().port}/` +
@@ -373,6 +472,7 @@ async function run({chromium, packageDir, testdata, transcoder}, work) {
       await checkAsset(page, glbs.filter((g) => g.asset === asset), once);
       once = false;
     }
+    await checkMainThread(page, packageDir, goldenDir);
   } finally {
     if (browser) await browser.close();
     server.close();
