@@ -174,3 +174,23 @@ list(
          "${draco_uv_ext}/hooks/web_encoder.h"
          "${draco_uv_ext}/web/uv_web_encoder.cc"
          "${draco_uv_ext}/web/uv_web_encoder.h")
+if(EMSCRIPTEN)
+  # The encoder's cold code, run a few times per encode (flag parsing,
+  # option checks, the choices' drivers, the JS encoder's setup): compiled
+  # for size.
+  set(draco_uv_cold_sources
+      "${draco_uv_ext}/options/draco_uv_flags.cc"
+      "${draco_uv_ext}/options/uv_compression_options.cc"
+      "${draco_uv_ext}/options/uv_configure.cc"
+      "${draco_uv_ext}/options/uv_encode_settings.cc"
+      "${draco_uv_ext}/options/uv_error_target.cc"
+      "${draco_uv_ext}/options/uv_laplacian_options.cc"
+      "${draco_uv_ext}/options/uv_prediction_options.cc"
+      "${draco_uv_ext}/options/tangent_compression_options.cc"
+      "${draco_uv_ext}/options/tangent_prediction_options.cc"
+      "${draco_uv_ext}/options/trial_encoder.cc"
+      "${draco_uv_ext}/options/uv_seam_options.cc"
+      "${draco_uv_ext}/web/uv_web_encoder.cc")
+  set_source_files_properties(${draco_uv_cold_sources}
+                              PROPERTIES COMPILE_OPTIONS "-Oz")
+endif()
