@@ -173,9 +173,7 @@ list(
          "${draco_uv_ext}/options/uv_seam_options.h"
          "${draco_uv_ext}/hooks/web_encoder.h"
          "${draco_uv_ext}/web/uv_web_encoder.cc"
-         "${draco_uv_ext}/web/uv_web_encoder.h"
-         "${draco_uv_schemes}/tangent/geometric_tangent_chooser.cc"
-         "${draco_uv_schemes}/tangent/geometric_tangent_chooser.h")
+         "${draco_uv_ext}/web/uv_web_encoder.h")
 if(EMSCRIPTEN)
   # The encoder's cold code, run a few times per encode (flag parsing,
   # option checks, the choices' drivers, the JS encoder's setup): compiled
