@@ -38,9 +38,13 @@
  * server counts its requests (no caching), none for every lossless GLB, at
  * least one for the Laplacian one. Once: the package's gltf/ decoder and its
  * asm.js fallback (setDecoderConfig({type: 'js'})) give the reference's
- * pixels, and gltf/ renders the Laplacian GLB with gltf/'s own part; without the plugin, the Laplacian GLB fails with a decoding error
- * that names the part and the option dracoUvPath, without requesting the
- * part, and renders once the page sets decoderConfig.dracoUvPath itself.
+ * pixels, and gltf/ renders the Laplacian GLB with gltf/'s own part; without
+ * the plugin, the Laplacian GLB fails with a decoding error that names the
+ * part and the option dracoUvPath, without requesting the part, and renders
+ * once the page sets decoderConfig.dracoUvPath itself. Last, on the page's
+ * main thread (no worker), the decoder module refuses a Laplacian file until
+ * loadDracoUvLaplacian() has loaded the part, then decodes it to the Node
+ * package's values.
  *
  *   node tests/web/three_browser_test.mjs
  *
@@ -53,9 +57,9 @@
 import {execFileSync} from 'node:child_process';
 import fs from 'node:fs';
 import http from 'node:http';
+import {createRequire} from 'node:module';
 import os from 'node:os';
 import path from 'node:path';
-import {createRequire} from 'node:module';
 import {fileURLToPath} from 'node:url';
 
 const kHere = path.dirname(fileURLToPath(import.meta.url));
