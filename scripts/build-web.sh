@@ -18,8 +18,8 @@
 #                  compression with the features of the glTF extension's
 #                  bitstream, no point clouds) with every coder, for its
 #                  asm.js fallback
-#   OUT/uv-gltf-ondemand/  the package's glTF-only decoder: as uv-gltf, with
-#                  the Laplacian solver in its own draco_decoder_laplacian.wasm
+#   OUT/uv-gltf-ondemand/  the package's glTF-only decoder: as uv-gltf, its
+#                  Laplacian solver in uv-ondemand's part (the same module)
 #   OUT/uv-ondemand/  the package's default decoder: every lossless coder,
 #                  and the lossy Laplacian coder's solver in a second module,
 #                  draco_decoder_laplacian.wasm, which the decoder loads only
@@ -152,7 +152,9 @@ write_package() {
   # it is draco_decoder.wasm, as in three.js's folder, so that a loader that
   # lets the module find its .wasm itself finds it.
   cp "${gltf_ondemand}/draco/draco_decoder_gltf.wasm" "${PACKAGE_DIR}/gltf/draco_decoder.wasm"
-  cp "${gltf_ondemand}/draco/draco_decoder_laplacian.wasm" "${PACKAGE_DIR}/gltf/"
+  # The part does not depend on the decoder's features: one build serves
+  # both folders.
+  cp "${ondemand}/draco/draco_decoder_laplacian.wasm" "${PACKAGE_DIR}/gltf/"
   local file
   for file in "${gltf_ondemand}/draco/draco_decoder_gltf.js" "${gltf}/asmjs/draco_decoder_gltf.js"; do
     grep -q '"draco_decoder_gltf.wasm"' "${file}" ||
@@ -174,7 +176,7 @@ build uv draco_decoder draco_encoder draco_decoder_asmjs
 configure uv-gltf "${ROOT}" -DDRACO_GLTF_BITSTREAM=ON
 build uv-gltf draco_decoder_asmjs
 configure uv-gltf-ondemand "${ROOT}" -DDRACO_GLTF_BITSTREAM=ON -DDRACO_UV_LAPLACIAN_ON_DEMAND=ON
-build uv-gltf-ondemand draco_decoder draco_decoder_laplacian
+build uv-gltf-ondemand draco_decoder
 configure uv-ondemand "${ROOT}" -DDRACO_UV_LAPLACIAN_ON_DEMAND=ON
 build uv-ondemand draco_decoder draco_decoder_laplacian
 write_package
